@@ -1,0 +1,415 @@
+/* ----------------------------------------------------------------------
+   GRANSPH: shared base of the granular SPH integrators.
+
+   Time integration. The paper's predictor-corrector (eqs. 11-18) evaluates the
+   rates twice per step: at t for the predictor, at t+dt/2 for the corrector.
+   A LAMMPS step evaluates the pair once (between initial_integrate and
+   final_integrate), so the predictor here uses the rates of the previous step's
+   mid-point evaluation, t-dt/2 (at the first step of a run: the setup
+   evaluation at t). That changes the predicted mid-point state by O(dt^2), so the
+   corrector, which integrates from t with the mid-point rates, keeps the
+   scheme second order at one rate evaluation per step; the unit test
+   GRANSPHIntegrator.SecondOrder shows the order.
+------------------------------------------------------------------------- */
+
+#include "fix_sph_integrate.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "group.h"
+#include "integrate.h"
+#include "memory.h"
+#include "modify.h"
+#include "pair.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using GRANSPH::Sym3;
+
+/* ---------------------------------------------------------------------- */
+
+FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), state(nullptr), rates(nullptr), start(nullptr), wallbit(0),
+    rho_init(0.0), cfl(0.2), geostatic_flag(0), surface_height(0.0), restored(0)
+{
+  const std::string style_name = std::string("fix ") + style;
+  if (narg < 5) error->all(FLERR, "Illegal {} command: need a material file and name", style_name);
+
+  material = GranSPHMaterial::read(lmp, arg[3], arg[4], style_name);
+  rho_init = material.rho0;
+
+  int iarg = 5;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", style_name, key);
+    if (key == "walls") {
+      const int igroup = group->find(arg[iarg + 1]);
+      if (igroup < 0) error->all(FLERR, "{}: walls group {} does not exist", style_name, arg[iarg + 1]);
+      wallbit = group->bitmask[igroup];
+      if (wallbit == groupbit)
+        error->all(FLERR, "{}: walls group must differ from the fix group", style_name);
+    } else if (key == "rho") {
+      rho_init = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (rho_init <= 0.0) error->all(FLERR, "{}: rho must be > 0", style_name);
+    } else if (key == "cfl") {
+      if (strcmp(arg[iarg + 1], "none") == 0)
+        cfl = 0.0;
+      else {
+        cfl = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+        if (cfl <= 0.0 || cfl > 1.0) error->all(FLERR, "{}: cfl must be in (0, 1] or none", style_name);
+      }
+    } else if (key == "geostatic") {
+      geostatic_flag = 1;
+      surface_height = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    } else
+      error->all(FLERR, "{}: unknown keyword {}", style_name, key);
+    iarg += 2;
+  }
+
+  if (!atom->rmass_flag && !atom->mass) error->all(FLERR, "{} needs per-type or per-atom masses", style_name);
+
+  time_integrate = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
+  peratom_flag = 1;
+  size_peratom_cols = NSTATE;
+  peratom_freq = 1;
+  comm_forward = NSTATE;
+  nevery = 1;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; ++i) set_arrays(i);
+}
+
+FixSPHIntegrate::~FixSPHIntegrate()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(state);
+  memory->destroy(rates);
+  memory->destroy(start);
+}
+
+int FixSPHIntegrate::setmask()
+{
+  return INITIAL_INTEGRATE | PRE_FORCE | FINAL_INTEGRATE | END_OF_STEP;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHIntegrate::init()
+{
+  if (!force->pair || !force->pair_match("sph/granular", 0))
+    error->all(FLERR, "Fix {} requires pair_style sph/granular", style);
+  if (update->whichflag == 1 && utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "Fix {} does not support run_style respa", style);
+  int count = 0;
+  for (int i = 0; i < modify->nfix; ++i)
+    if (dynamic_cast<FixSPHIntegrate *>(modify->fix[i])) ++count;
+  if (count > 1) error->all(FLERR, "Only one GRANSPH integrator fix may be defined");
+}
+
+// before the setup force evaluation, so that the first rates see the initial stress
+void FixSPHIntegrate::setup_pre_force(int /*vflag*/)
+{
+  if (geostatic_flag && !restored) init_geostatic_stress();
+  geostatic_flag = 0;
+}
+
+void FixSPHIntegrate::setup(int /*vflag*/)
+{
+  reset_cfl_timestep();
+}
+
+/* ----------------------------------------------------------------------
+   predictor, eqs. 11-14: half a step with the latest rates
+------------------------------------------------------------------------- */
+
+void FixSPHIntegrate::initial_integrate(int /*vflag*/)
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  const double *rmass = atom->rmass;
+  const double *mass = atom->mass;
+  const int *type = atom->type;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double half = 0.5 * update->dt;
+
+  for (int i = 0; i < nlocal; ++i) {
+    if (!(mask[i] & groupbit)) continue;
+    const double dtfm = half * force->ftm2v / (rmass ? rmass[i] : mass[type[i]]);
+    for (int a = 0; a < 3; ++a) {
+      start[i][V_START + a] = v[i][a];
+      x[i][a] += half * v[i][a];
+      v[i][a] += dtfm * f[i][a];
+    }
+    start[i][RHO_START] = state[i][RHO];
+    state[i][RHO] += half * rates[i][DRHO];
+  }
+  update_stress(half);
+}
+
+/* ----------------------------------------------------------------------
+   corrector, eqs. 15-18: from t with the mid-point rates; the stress continues
+   from its predicted value (eq. 18)
+------------------------------------------------------------------------- */
+
+void FixSPHIntegrate::final_integrate()
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  const double *rmass = atom->rmass;
+  const double *mass = atom->mass;
+  const int *type = atom->type;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double dt = update->dt;
+
+  for (int i = 0; i < nlocal; ++i) {
+    if (!(mask[i] & groupbit)) continue;
+    const double dtfm = dt * force->ftm2v / (rmass ? rmass[i] : mass[type[i]]);
+    for (int a = 0; a < 3; ++a) {
+      // x_{n+1} = x_n + dt v_{n+1/2}, with x_n = x_{n+1/2} - dt/2 v_n
+      x[i][a] += dt * (v[i][a] - 0.5 * start[i][V_START + a]);
+      v[i][a] = start[i][V_START + a] + dtfm * f[i][a];
+    }
+    state[i][RHO] = start[i][RHO_START] + dt * rates[i][DRHO];
+  }
+  update_stress(0.5 * dt);
+  check_finite();
+}
+
+void FixSPHIntegrate::end_of_step()
+{
+  reset_cfl_timestep();
+}
+
+void FixSPHIntegrate::reset_dt()
+{
+  // the timestep is read from update->dt whenever it is needed
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixSPHIntegrate::sound_speed(double rho) const
+{
+  return sqrt(material.E / rho);
+}
+
+void FixSPHIntegrate::forward_comm_state()
+{
+  comm->forward_comm_fix(this);
+}
+
+double FixSPHIntegrate::smoothing_length() const
+{
+  int dim = 0;
+  auto h = static_cast<double *>(force->pair->extract("h", dim));
+  if (!h) error->all(FLERR, "Fix {}: pair style does not provide a smoothing length", style);
+  return *h;
+}
+
+// sum of the accelerations of all fix gravity instances
+void FixSPHIntegrate::gravity_vector(double *g) const
+{
+  g[0] = g[1] = g[2] = 0.0;
+  for (int i = 0; i < modify->nfix; ++i) {
+    if (!utils::strmatch(modify->fix[i]->style, "^gravity")) continue;
+    int dim = 0;
+    auto gvec = static_cast<double *>(modify->fix[i]->extract("gvec", dim));
+    if (gvec)
+      for (int a = 0; a < 3; ++a) g[a] += gvec[a];
+  }
+}
+
+/* ----------------------------------------------------------------------
+   eq. 19: dt = C min(sqrt(h / max|a|), h / c) with c = sqrt(E / rho)
+------------------------------------------------------------------------- */
+
+void FixSPHIntegrate::reset_cfl_timestep()
+{
+  if (cfl == 0.0) return;
+  double **f = atom->f;
+  const double *rmass = atom->rmass;
+  const double *mass = atom->mass;
+  const int *type = atom->type;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+
+  double local[2] = {0.0, 0.0};    // max |a|^2, max c
+  for (int i = 0; i < nlocal; ++i) {
+    if (!(mask[i] & groupbit)) continue;
+    const double m = rmass ? rmass[i] : mass[type[i]];
+    const double a2 = (f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]) / (m * m);
+    local[0] = MAX(local[0], a2);
+    local[1] = MAX(local[1], sound_speed(state[i][RHO]));
+  }
+  double global[2];
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
+  if (global[1] == 0.0) return;    // no granular particles anywhere
+
+  const double h = smoothing_length();
+  const double amax = sqrt(global[0]) * force->ftm2v;
+  double dt = h / global[1];
+  if (amax > 0.0) dt = MIN(dt, sqrt(h / amax));
+  dt *= cfl;
+  if (dt == update->dt) return;
+
+  update->update_time();
+  update->dt = dt;
+  update->dt_default = 0;
+  if (force->pair) force->pair->reset_dt();
+  for (int i = 0; i < modify->nfix; i++) modify->fix[i]->reset_dt();
+}
+
+/* ----------------------------------------------------------------------
+   geostatic initial stress: sigma_v = rho0 |g| (z - z_s) below the surface
+   (vertical = z in 3D, y in 2D), sigma_h = K0 sigma_v with K0 = nu / (1 - nu)
+------------------------------------------------------------------------- */
+
+void FixSPHIntegrate::init_geostatic_stress()
+{
+  double g[3];
+  gravity_vector(g);
+  const int up = domain->dimension == 3 ? 2 : 1;
+  const double gmag = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  if (gmag == 0.0) error->all(FLERR, "Fix {} geostatic needs a fix gravity", style);
+  const double k0 = material.nu / (1.0 - material.nu);
+  double **x = atom->x;
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(mask[i] & groupbit)) continue;
+    const double sv = MIN(0.0, rho_init * gmag * (x[i][up] - surface_height));
+    Sym3 s = Sym3::iso(k0 * sv);
+    if (up == 2) s.zz = sv;
+    else s.yy = sv;
+    s.store(&state[i][SIGMA]);
+  }
+}
+
+// A non-finite state stops the run with the atom's ID rather than spreading NaNs.
+void FixSPHIntegrate::check_finite() const
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(mask[i] & groupbit)) continue;
+    double sum = x[i][0] + x[i][1] + x[i][2] + v[i][0] + v[i][1] + v[i][2];
+    for (int k = 0; k < NSTATE; ++k) sum += state[i][k];
+    if (!std::isfinite(sum))
+      error->one(FLERR, "Fix {}: atom {} has a non-finite state (rho {}, v {} {} {}) at step {}",
+                 style, atom->tag[i], state[i][RHO], v[i][0], v[i][1], v[i][2],
+                 update->ntimestep);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   per-atom arrays: they move with the atoms and survive restarts
+------------------------------------------------------------------------- */
+
+void FixSPHIntegrate::grow_arrays(int nmax)
+{
+  memory->grow(state, nmax, NSTATE, "sph:state");
+  memory->grow(rates, nmax, NRATES, "sph:rates");
+  memory->grow(start, nmax, NSTART, "sph:start");
+  array_atom = state;
+}
+
+void FixSPHIntegrate::copy_arrays(int i, int j, int /*delflag*/)
+{
+  memcpy(state[j], state[i], NSTATE * sizeof(double));
+  memcpy(rates[j], rates[i], NRATES * sizeof(double));
+  memcpy(start[j], start[i], NSTART * sizeof(double));
+}
+
+// new atoms (create_atoms, read_data, inflow fixes) start at rest and stress-free
+void FixSPHIntegrate::set_arrays(int i)
+{
+  state[i][RHO] = rho_init;
+  for (int k = 1; k < NSTATE; ++k) state[i][k] = 0.0;
+  for (int k = 0; k < NRATES; ++k) rates[i][k] = 0.0;
+  for (int k = 0; k < NSTART; ++k) start[i][k] = 0.0;
+}
+
+int FixSPHIntegrate::pack_exchange(int i, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < NSTATE; ++k) buf[m++] = state[i][k];
+  for (int k = 0; k < NRATES; ++k) buf[m++] = rates[i][k];
+  for (int k = 0; k < NSTART; ++k) buf[m++] = start[i][k];
+  return m;
+}
+
+int FixSPHIntegrate::unpack_exchange(int nlocal, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < NSTATE; ++k) state[nlocal][k] = buf[m++];
+  for (int k = 0; k < NRATES; ++k) rates[nlocal][k] = buf[m++];
+  for (int k = 0; k < NSTART; ++k) start[nlocal][k] = buf[m++];
+  return m;
+}
+
+// restart files hold the state and the last wall velocity; rates are recomputed at setup
+int FixSPHIntegrate::pack_restart(int i, double *buf)
+{
+  int m = 0;
+  buf[m++] = NSTATE + 3 + 1;
+  for (int k = 0; k < NSTATE; ++k) buf[m++] = state[i][k];
+  for (int k = 0; k < 3; ++k) buf[m++] = start[i][WALL_V + k];
+  return m;
+}
+
+void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k < NSTATE; ++k) state[nlocal][k] = extra[nlocal][m++];
+  for (int k = 0; k < 3; ++k) start[nlocal][WALL_V + k] = extra[nlocal][m++];
+  restored = 1;
+}
+
+int FixSPHIntegrate::size_restart(int /*nlocal*/)
+{
+  return NSTATE + 3 + 1;
+}
+
+int FixSPHIntegrate::maxsize_restart()
+{
+  return NSTATE + 3 + 1;
+}
+
+int FixSPHIntegrate::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
+                                       int * /*pbc*/)
+{
+  int m = 0;
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < NSTATE; ++k) buf[m++] = state[list[i]][k];
+  return m;
+}
+
+void FixSPHIntegrate::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; ++i)
+    for (int k = 0; k < NSTATE; ++k) state[i][k] = buf[m++];
+}
+
+double FixSPHIntegrate::memory_usage()
+{
+  return (double) atom->nmax * (NSTATE + NRATES + NSTART) * sizeof(double);
+}

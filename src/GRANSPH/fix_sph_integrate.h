@@ -1,0 +1,96 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: shared base of the granular SPH integrators.
+
+   Owns the per-atom SPH state (density and Cauchy stress), the rates the pair
+   style writes (density rate, strain rate, spin), and the predictor copies; runs
+   the predictor-corrector of the paper (eqs. 11-18) and the CFL step (eq. 19).
+   A derived class supplies the constitutive model (the stress update).
+------------------------------------------------------------------------- */
+
+#ifndef LMP_FIX_SPH_INTEGRATE_H
+#define LMP_FIX_SPH_INTEGRATE_H
+
+#include "atom.h"
+#include "fix.h"
+#include "gransph_material.h"
+#include "gransph_tensor.h"
+
+namespace LAMMPS_NS {
+
+class FixSPHIntegrate : public Fix {
+ public:
+  // Columns of the per-atom arrays. STATE is forward-communicated, restarted and
+  // exposed as the fix's per-atom output (f_ID[1] = rho, f_ID[2..7] = stress).
+  enum { RHO = 0, SIGMA = 1, NSTATE = 7 };
+  enum { DRHO = 0, STRAIN = 1, SPIN = 7, NRATES = 10 };
+  enum { V_START = 0, RHO_START = 3, WALL_V = 4, NSTART = 7 };
+
+  FixSPHIntegrate(class LAMMPS *, int, char **);
+  ~FixSPHIntegrate() override;
+  int setmask() override;
+  void init() override;
+  void setup_pre_force(int) override;
+  void setup(int) override;
+  void initial_integrate(int) override;
+  void final_integrate() override;
+  void end_of_step() override;
+  void reset_dt() override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  double memory_usage() override;
+
+  // What sph/granular reads and writes.
+  double **state;    // rho, sigma (xx yy zz xy xz yz)
+  double **rates;    // drho/dt, strain rate (6), spin (xy xz yz)
+  double **start;    // v and rho at the start of the step; last wall velocity
+  int wallbit;       // group bit of the dummy-wall particles (0: no walls)
+  GranSPHMaterial material;
+
+  void forward_comm_state();    // ghosts get fresh rho and sigma
+  double sound_speed(double rho) const;
+  void gravity_vector(double *g) const;    // sum of all fix gravity accelerations
+
+ protected:
+  // Advance the stress of every granular particle by dt with the current rates.
+  virtual void update_stress(double dt) = 0;
+
+  // Shared loop for the constitutive models: sigma <- model.update(...)
+  template <class Model> void update_stress_with(const Model &model, double dt)
+  {
+    const int nlocal = atom->nlocal;
+    const int *const mask = atom->mask;
+    for (int i = 0; i < nlocal; ++i) {
+      if (!(mask[i] & groupbit)) continue;
+      const GRANSPH::Sym3 s = GRANSPH::Sym3::load(&state[i][SIGMA]);
+      const GRANSPH::Sym3 d = GRANSPH::Sym3::load(&rates[i][STRAIN]);
+      const GRANSPH::Spin3 w = GRANSPH::Spin3::load(&rates[i][SPIN]);
+      model.update(s, d, w, state[i][RHO], dt).store(&state[i][SIGMA]);
+    }
+  }
+
+  double rho_init;      // initial density of all particles (material rho0 by default)
+  double cfl;           // CFL factor of eq. 19; 0 keeps the LAMMPS timestep
+  int geostatic_flag;   // initialise a geostatic stress below surface_height
+  double surface_height;
+  int restored;         // state came from a restart file
+
+ private:
+  double smoothing_length() const;
+  void init_geostatic_stress();
+  void check_finite() const;
+  void reset_cfl_timestep();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

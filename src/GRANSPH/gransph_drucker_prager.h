@@ -1,0 +1,85 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: elastic-perfectly plastic Drucker-Prager stress update with the
+   Jaumann rate (paper eqs. 29-33; Bui, Fukagawa, Sako & Ohno 2008).
+   Stress is tension positive, so the yield function reads
+       f = sqrt(J2) + alpha_phi I1 - k_c
+   (the paper prints the compression-positive form). Usable on host and device.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_GRANSPH_DRUCKER_PRAGER_H
+#define LMP_GRANSPH_DRUCKER_PRAGER_H
+
+#include "gransph_tensor.h"
+
+namespace GRANSPH {
+
+struct DruckerPrager {
+  double K, G;          // bulk and shear moduli, eqs. 24-25
+  double alpha_phi;     // eq. 30
+  double k_c;           // eq. 31
+  double sin_psi;       // dilatancy angle
+
+  // Plane-strain matching of Bui et al.: friction angle phi and dilatancy psi in
+  // radians, cohesion c.
+  KOKKOS_INLINE_FUNCTION static DruckerPrager from_material(double E, double nu, double phi,
+                                                            double psi, double c)
+  {
+    const double tphi = tan(phi);
+    const double root = sqrt(9.0 + 12.0 * tphi * tphi);
+    return {E / (3.0 * (1.0 - 2.0 * nu)), E / (2.0 * (1.0 + nu)), tphi / root, 3.0 * c / root,
+            sin(psi)};
+  }
+
+  KOKKOS_INLINE_FUNCTION double yield_function(const Sym3 &s) const
+  {
+    return sqrt(second_invariant(s)) + alpha_phi * s.trace() - k_c;
+  }
+
+  // Bui's treatment of states outside the admissible region: tension beyond the
+  // apex of the cone is cut back to the apex (tension cracking), then a deviator
+  // outside the cone is scaled back onto it.
+  KOKKOS_INLINE_FUNCTION Sym3 return_to_cone(Sym3 s) const
+  {
+    if (alpha_phi > 0.0) {
+      const double i1_apex = k_c / alpha_phi;
+      const double excess = s.trace() - i1_apex;
+      if (excess > 0.0) s = s - Sym3::iso(excess / 3.0);
+    }
+    const double strength = k_c - alpha_phi * s.trace();
+    const double sqrt_j2 = sqrt(second_invariant(s));
+    if (strength <= 0.0) return Sym3::iso(s.trace() / 3.0);
+    if (sqrt_j2 > strength) {
+      const Sym3 dev = s.deviator();
+      return Sym3::iso(s.trace() / 3.0) + (strength / sqrt_j2) * dev;
+    }
+    return s;
+  }
+
+  // Rate of stress of eq. 32 at state s for strain rate d and spin w.
+  KOKKOS_INLINE_FUNCTION Sym3 stress_rate(const Sym3 &s, const Sym3 &d, const Spin3 &w) const
+  {
+    Sym3 rate = jaumann_rotation(s, w) + elastic_rate(d, K, G);
+    const double sqrt_j2 = sqrt(second_invariant(s));
+    // plastic flow only on the yield surface (states are kept inside by return_to_cone)
+    const double tol = 1.0e-10 * (k_c + fabs(alpha_phi * s.trace()) + sqrt_j2);
+    if (sqrt_j2 <= 0.0 || yield_function(s) < -tol) return rate;
+    const Sym3 dev = s.deviator();
+    // plastic multiplier, eq. 33; only loading (lambda > 0) flows
+    const double lambda = (3.0 * alpha_phi * K * d.trace() + (G / sqrt_j2) * dev.ddot(d)) /
+        (27.0 * alpha_phi * K * sin_psi + G);
+    if (lambda <= 0.0) return rate;
+    return rate - lambda * (Sym3::iso(9.0 * K * sin_psi) + (G / sqrt_j2) * dev);
+  }
+
+  // One explicit step of length dt, then back into the admissible region. The
+  // density is part of the common stress-model interface; this model ignores it.
+  KOKKOS_INLINE_FUNCTION Sym3 update(const Sym3 &s, const Sym3 &d, const Spin3 &w, double /*rho*/,
+                                     double dt) const
+  {
+    return return_to_cone(s + dt * stress_rate(s, d, w));
+  }
+};
+
+}    // namespace GRANSPH
+
+#endif

@@ -1,0 +1,111 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: the pairwise SPH sums of the paper, one neighbour at a time.
+   Continuity (eq. 6a), momentum with the full stress and Monaghan viscosity
+   (eqs. 6b, 7), strain-rate and spin tensors (eqs. 34, 35), dummy-wall stress
+   extrapolation (eq. 8). Usable on host and device.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_GRANSPH_PAIR_TERMS_H
+#define LMP_GRANSPH_PAIR_TERMS_H
+
+#include "gransph_tensor.h"
+
+namespace GRANSPH {
+
+// What a particle brings to a pair interaction.
+struct ParticleView {
+  double mass, rho, c;    // c: sound speed sqrt(E/rho), eq. 19
+  Sym3 sigma;
+};
+
+// Monaghan artificial viscosity Pi_ij, eq. 7, with phi = 0.1 h in the denominator.
+// dx = x_i - x_j, dv = v_i - v_j. Acts only between approaching particles.
+KOKKOS_INLINE_FUNCTION double monaghan_viscosity(const double *dx, const double *dv, double rsq,
+                                                 double h, double alpha, double beta,
+                                                 const ParticleView &pi, const ParticleView &pj)
+{
+  const double vdotx = dv[0] * dx[0] + dv[1] * dx[1] + dv[2] * dx[2];
+  if (vdotx >= 0.0) return 0.0;
+  const double phi = h * vdotx / (rsq + 0.01 * h * h);
+  const double c_ij = 0.5 * (pi.c + pj.c);
+  const double rho_ij = 0.5 * (pi.rho + pj.rho);
+  return (-alpha * c_ij * phi + beta * phi * phi) / rho_ij;
+}
+
+// Acceleration of i due to j, eq. 6b: m_j ((s_i + s_j)/(rho_i rho_j) - Pi_ij I) grad_i W.
+// The viscous term is a pressure (Monaghan 1992), hence the minus sign under our
+// tension-positive stress; the paper's "+ Pi" assumes the opposite sign of Pi.
+KOKKOS_INLINE_FUNCTION void momentum_term(const ParticleView &pi, const ParticleView &pj,
+                                          double visc, const double *gradw, double *acc)
+{
+  const Sym3 t = (1.0 / (pi.rho * pj.rho)) * (pi.sigma + pj.sigma) - Sym3::iso(visc);
+  acc[0] += pj.mass * (t.xx * gradw[0] + t.xy * gradw[1] + t.xz * gradw[2]);
+  acc[1] += pj.mass * (t.xy * gradw[0] + t.yy * gradw[1] + t.yz * gradw[2]);
+  acc[2] += pj.mass * (t.xz * gradw[0] + t.yz * gradw[1] + t.zz * gradw[2]);
+}
+
+// Rates of a granular particle accumulated over its neighbours.
+struct ParticleRates {
+  double drho;      // eq. 6a
+  double acc[3];    // eq. 6b
+  Sym3 strain;      // eq. 34
+  Spin3 spin;       // eq. 35
+
+  KOKKOS_INLINE_FUNCTION static ParticleRates zero()
+  {
+    return {0.0, {0.0, 0.0, 0.0}, Sym3::zero(), Spin3::zero()};
+  }
+};
+
+// All contributions of neighbour j to the rates of i. dx = x_i - x_j, dv = v_i - v_j,
+// gradw = grad_i W_ij.
+KOKKOS_INLINE_FUNCTION void add_neighbour(ParticleRates &r, const ParticleView &pi,
+                                          const ParticleView &pj, const double *dv,
+                                          const double *gradw, double visc)
+{
+  r.drho += pj.mass * (dv[0] * gradw[0] + dv[1] * gradw[1] + dv[2] * gradw[2]);
+  momentum_term(pi, pj, visc, gradw, r.acc);
+
+  // v_ji = -dv; eqs. 34-35 carry 1/2 m_j/rho_j
+  const double s = -0.5 * pj.mass / pj.rho;
+  r.strain.xx += s * 2.0 * dv[0] * gradw[0];
+  r.strain.yy += s * 2.0 * dv[1] * gradw[1];
+  r.strain.zz += s * 2.0 * dv[2] * gradw[2];
+  r.strain.xy += s * (dv[0] * gradw[1] + dv[1] * gradw[0]);
+  r.strain.xz += s * (dv[0] * gradw[2] + dv[2] * gradw[0]);
+  r.strain.yz += s * (dv[1] * gradw[2] + dv[2] * gradw[1]);
+  r.spin.xy += s * (dv[0] * gradw[1] - dv[1] * gradw[0]);
+  r.spin.xz += s * (dv[0] * gradw[2] - dv[2] * gradw[0]);
+  r.spin.yz += s * (dv[1] * gradw[2] - dv[2] * gradw[1]);
+}
+
+// Dummy-particle stress, eq. 8 (Adami et al. 2012 generalised to a tensor):
+// sigma_d = (sum_k sigma_k W_dk - ((g - a_d) . sum_k rho_k r_dk W_dk) I) / sum_k W_dk,
+// with r_dk = x_d - x_k pointing from the granular particle k to the dummy d.
+struct WallSums {
+  Sym3 sigma_w;
+  double rho_r_w[3];
+  double w;
+
+  KOKKOS_INLINE_FUNCTION static WallSums zero() { return {Sym3::zero(), {0.0, 0.0, 0.0}, 0.0}; }
+
+  KOKKOS_INLINE_FUNCTION void add(const Sym3 &sigma_k, double rho_k, const double *r_dk, double wdk)
+  {
+    sigma_w = sigma_w + wdk * sigma_k;
+    for (int a = 0; a < 3; ++a) rho_r_w[a] += rho_k * r_dk[a] * wdk;
+    w += wdk;
+  }
+
+  // g_minus_a = g - a_d; a dummy particle without granular neighbours is stress-free
+  KOKKOS_INLINE_FUNCTION Sym3 stress(const double *g_minus_a) const
+  {
+    if (w <= 0.0) return Sym3::zero();
+    const double hydro =
+        g_minus_a[0] * rho_r_w[0] + g_minus_a[1] * rho_r_w[1] + g_minus_a[2] * rho_r_w[2];
+    return (1.0 / w) * (sigma_w - Sym3::iso(hydro));
+  }
+};
+
+}    // namespace GRANSPH
+
+#endif

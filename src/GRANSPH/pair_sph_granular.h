@@ -1,0 +1,48 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: pair_style sph/granular, the SPH rates of granular particles and
+   the stress and force of dummy-wall particles.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(sph/granular,PairSPHGranular);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_SPH_GRANULAR_H
+#define LMP_PAIR_SPH_GRANULAR_H
+
+#include "pair.h"
+
+namespace LAMMPS_NS {
+
+class FixSPHIntegrate;
+
+class PairSPHGranular : public Pair {
+ public:
+  PairSPHGranular(class LAMMPS *);
+  ~PairSPHGranular() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void *extract(const char *, int &) override;
+
+ protected:
+  double h;              // smoothing length; the kernel support is 2h
+  double alpha, beta;    // Monaghan viscosity coefficients, eq. 7
+  FixSPHIntegrate *integrator;
+
+  void allocate();
+  void tally_virial(int i, const double *vir);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

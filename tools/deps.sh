@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# Install GRANSPH's dependencies from Debian's registry and build Kokkos + LAMMPS.
+#
+# Everything lands outside the git tree, in $GRANSPH_DEPS (default ~/.cache/gransph):
+#   src/     pinned Debian source packages (sha256-checked)
+#   kokkos/  Kokkos 3.4.01 (from trilinos' packages/kokkos), OpenMP+Serial, installed
+#   lammps/  LAMMPS 29Sep2021 update 2 source tree and its build tree (lammps/build)
+# A second run with everything in place only re-checks and returns in seconds.
+set -euo pipefail
+
+GRANSPH_DEPS=${GRANSPH_DEPS:-$HOME/.cache/gransph}
+JOBS=${JOBS:-$(nproc)}
+
+LAMMPS_DEB=20220106.git7586adbb6a+ds1-2
+LAMMPS_ORIG=lammps_20220106.git7586adbb6a+ds1.orig.tar.xz
+LAMMPS_SHA256=65146c615ad24d8b8bc64f4e05e86226a7f1fdb45c0b5ea9416562b9f3863082
+TRILINOS_DEB=13.2.0-4
+TRILINOS_ORIG=trilinos_13.2.0.orig.tar.gz
+TRILINOS_SHA256=0ddb47784ba7b8a6b9a07a4822b33be508feb4ccd54301b2a5d10c9e54524b90
+
+APT_PACKAGES=(build-essential cmake ninja-build ccache dpkg-dev xz-utils
+  libopenmpi-dev openmpi-bin libeigen3-dev libgtest-dev libgmock-dev libyaml-dev
+  libpng-dev python3-numpy python3-matplotlib)
+
+log() { printf '[deps] %s\n' "$*"; }
+
+as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+
+install_apt_packages() {
+  local missing=()
+  for p in "${APT_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+  done
+  if ! grep -rqs '^Types:.*deb-src' /etc/apt/sources.list.d/ &&
+     ! grep -qs '^deb-src .* bookworm ' /etc/apt/sources.list; then
+    log "enabling deb-src for bookworm"
+    as_root tee /etc/apt/sources.list.d/gransph-src.sources >/dev/null <<'SRC'
+Types: deb-src
+URIs: http://deb.debian.org/debian
+Suites: bookworm
+Components: main
+Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
+SRC
+    missing+=(update-needed)
+  fi
+  if [ ${#missing[@]} -gt 0 ]; then
+    log "installing apt packages: ${missing[*]}"
+    as_root apt-get update -qq
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${APT_PACKAGES[@]}" >/dev/null
+  fi
+}
+
+# fetch_source PACKAGE DEBIAN_VERSION ORIG_TARBALL SHA256
+fetch_source() {
+  local pkg=$1 ver=$2 orig=$3 sum=$4
+  mkdir -p "$GRANSPH_DEPS/src"
+  if ! echo "$sum  $GRANSPH_DEPS/src/$orig" | sha256sum --check --status 2>/dev/null; then
+    log "downloading Debian source package $pkg=$ver"
+    (cd "$GRANSPH_DEPS/src" && apt-get source --download-only "$pkg=$ver" >/dev/null 2>&1)
+    echo "$sum  $GRANSPH_DEPS/src/$orig" | sha256sum --check --quiet ||
+      { echo "[deps] checksum mismatch for $orig" >&2; exit 1; }
+  fi
+}
+
+build_kokkos() {
+  local prefix=$GRANSPH_DEPS/kokkos stamp=$GRANSPH_DEPS/kokkos/.built-$TRILINOS_DEB
+  [ -f "$stamp" ] && return
+  log "building Kokkos 3.4.01 (OpenMP+Serial)"
+  local work=$GRANSPH_DEPS/kokkos-src
+  rm -rf "$work" "$prefix" && mkdir -p "$work"
+  tar -xzf "$GRANSPH_DEPS/src/$TRILINOS_ORIG" -C "$work" --strip-components=2 \
+      --wildcards '*/packages/kokkos/*'
+  cmake -S "$work/kokkos" -B "$work/build" -G Ninja -D CMAKE_BUILD_TYPE=Release \
+      -D CMAKE_CXX_COMPILER_LAUNCHER=ccache -D CMAKE_INSTALL_PREFIX="$prefix" \
+      -D BUILD_SHARED_LIBS=ON -D Kokkos_ENABLE_SERIAL=ON -D Kokkos_ENABLE_OPENMP=ON \
+      -D CMAKE_CXX_STANDARD=14 >/dev/null
+  cmake --build "$work/build" -j "$JOBS" >/dev/null
+  cmake --install "$work/build" >/dev/null
+  rm -rf "$work"
+  touch "$stamp"
+}
+
+# The LAMMPS packages GRANSPH needs: KOKKOS (the /kk styles), PLUGIN (loads us),
+# SPH (the sph/taitwater peer in bench/), GRANULAR (for comparisons), MOLECULE
+# (LAMMPS' test_fix_timestep harness skips every test without it).
+lammps_cmake_args() {
+  echo -G Ninja -D CMAKE_BUILD_TYPE=Release -D CMAKE_CXX_COMPILER_LAUNCHER=ccache \
+    -D CMAKE_PREFIX_PATH="$GRANSPH_DEPS/kokkos" -D BUILD_SHARED_LIBS=on \
+    -D BUILD_MPI=on -D BUILD_OMP=on -D LAMMPS_EXCEPTIONS=on \
+    -D PKG_KOKKOS=on -D EXTERNAL_KOKKOS=on -D Kokkos_ENABLE_OPENMP=on \
+    -D PKG_PLUGIN=on -D PKG_SPH=on -D PKG_GRANULAR=on -D PKG_MOLECULE=on \
+    -D WITH_PNG=on -D WITH_JPEG=off -D WITH_FFMPEG=off -D WITH_GZIP=off
+}
+
+build_lammps() {
+  local src=$GRANSPH_DEPS/lammps build=$GRANSPH_DEPS/lammps/build
+  local config; config=$(lammps_cmake_args | sha256sum | cut -c1-16)
+  local stamp=$build/.built-$LAMMPS_DEB-$config
+  [ -f "$stamp" ] && [ -x "$build/lmp" ] && return
+  if [ ! -f "$src/.unpacked-$LAMMPS_DEB" ]; then
+    log "unpacking LAMMPS $LAMMPS_DEB"
+    rm -rf "$src" && mkdir -p "$src"
+    tar -xJf "$GRANSPH_DEPS/src/$LAMMPS_ORIG" -C "$src" --strip-components=1
+    touch "$src/.unpacked-$LAMMPS_DEB"
+  fi
+  log "building LAMMPS (this takes ~6 min on 2 cores without a warm ccache)"
+  # shellcheck disable=SC2046
+  cmake -S "$src/cmake" -B "$build" $(lammps_cmake_args) >/dev/null
+  cmake --build "$build" -j "$JOBS" >/dev/null
+  touch "$stamp"
+}
+
+install_apt_packages
+fetch_source lammps "$LAMMPS_DEB" "$LAMMPS_ORIG" "$LAMMPS_SHA256"
+fetch_source trilinos "$TRILINOS_DEB" "$TRILINOS_ORIG" "$TRILINOS_SHA256"
+build_kokkos
+build_lammps
+log "ready: LAMMPS in $GRANSPH_DEPS/lammps/build, Kokkos in $GRANSPH_DEPS/kokkos"

@@ -1,0 +1,145 @@
+// Unit tests of the Jaumann rate and the Drucker-Prager stress update.
+
+#include "gransph_drucker_prager.h"
+#include "gransph_tensor.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace GRANSPH;
+
+namespace {
+constexpr double PI = 3.14159265358979323846;
+
+// R sigma R^T for a rotation by theta about z
+Sym3 rotate_z(const Sym3 &s, double theta)
+{
+  const double c = std::cos(theta), n = std::sin(theta);
+  const double R[3][3] = {{c, -n, 0.0}, {n, c, 0.0}, {0.0, 0.0, 1.0}};
+  const double S[3][3] = {{s.xx, s.xy, s.xz}, {s.xy, s.yy, s.yz}, {s.xz, s.yz, s.zz}};
+  double out[3][3] = {};
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) out[a][b] += R[a][k] * S[k][l] * R[b][l];
+  return {out[0][0], out[1][1], out[2][2], out[0][1], out[0][2], out[1][2]};
+}
+
+double max_abs_diff(const Sym3 &a, const Sym3 &b)
+{
+  const Sym3 d = a - b;
+  return std::fmax(std::fmax(std::fmax(std::fabs(d.xx), std::fabs(d.yy)), std::fmax(std::fabs(d.zz), std::fabs(d.xy))),
+                   std::fmax(std::fabs(d.xz), std::fabs(d.yz)));
+}
+
+// Table 2 of the paper
+const double E = 20.0e6, NU = 0.3, PHI = 37.0 * PI / 180.0;
+const DruckerPrager DP = DruckerPrager::from_material(E, NU, PHI, 0.0, 0.0);
+}    // namespace
+
+TEST(Jaumann, PureRotationRotatesStress)
+{
+  const Sym3 s0{-3.0e4, -1.0e4, -2.0e4, 5.0e3, -2.0e3, 1.0e3};
+  const double omega = 3.0, t_end = PI / 4.0 / omega;    // a 45 degree turn about z
+  const Spin3 w{-omega, 0.0, 0.0};                        // v = omega z x x
+  const int n = 20000;
+  const double dt = t_end / n;
+  Sym3 s = s0;
+  for (int k = 0; k < n; ++k) s = jaumann_trial(s, Sym3::zero(), w, 1e7, 1e7, dt);
+  EXPECT_LT(max_abs_diff(s, rotate_z(s0, omega * t_end)), 1e-3 * 3.0e4);
+  // invariants are those of s0
+  EXPECT_NEAR(s.trace(), s0.trace(), 1e-9 * 3.0e4);
+  EXPECT_NEAR(second_invariant(s), second_invariant(s0), 1e-3 * second_invariant(s0));
+}
+
+TEST(Jaumann, RotationCreatesNoStressFromNothingOrFromPressure)
+{
+  const Spin3 w{0.7, -1.1, 2.3};
+  const Sym3 none = jaumann_trial(Sym3::zero(), Sym3::zero(), w, 1e7, 1e7, 1e-3);
+  EXPECT_EQ(max_abs_diff(none, Sym3::zero()), 0.0);
+  const Sym3 p = Sym3::iso(-5.0e4);
+  EXPECT_LT(max_abs_diff(jaumann_trial(p, Sym3::zero(), w, 1e7, 1e7, 1e-3), p), 1e-9);
+}
+
+TEST(Jaumann, HookeRateSplitsIntoVolumetricAndDeviatoric)
+{
+  const double K = 1.0e7, G = 4.0e6, dt = 1e-4;
+  const Sym3 d{1.0, -0.5, 0.25, 0.3, 0.0, -0.2};
+  const Sym3 s = jaumann_trial(Sym3::zero(), d, Spin3::zero(), K, G, dt);
+  EXPECT_NEAR(s.trace(), 3.0 * K * d.trace() * dt, 1e-6);
+  EXPECT_NEAR(s.xy, 2.0 * G * d.xy * dt, 1e-9);
+  EXPECT_NEAR(s.deviator().xx, 2.0 * G * d.deviator().xx * dt, 1e-6);
+}
+
+TEST(DruckerPrager, MaterialConstantsOfPlaneStrainMatching)
+{
+  const double t = std::tan(PHI);
+  EXPECT_NEAR(DP.alpha_phi, t / std::sqrt(9.0 + 12.0 * t * t), 1e-15);    // eq. 30
+  EXPECT_EQ(DP.k_c, 0.0);                                                 // c = 0
+  EXPECT_NEAR(DP.K, E / (3.0 * (1.0 - 2.0 * NU)), 1e-6);
+  EXPECT_NEAR(DP.G, E / (2.0 * (1.0 + NU)), 1e-6);
+}
+
+TEST(DruckerPrager, ElasticBelowTheYieldSurface)
+{
+  const Sym3 s = Sym3::iso(-1.0e4);    // pure pressure: well inside the cone
+  const Sym3 d{1e-3, -2e-3, 5e-4, 1e-3, 0.0, 0.0};
+  const Spin3 w{0.1, 0.0, 0.0};
+  const double dt = 1e-5;
+  const Sym3 trial = jaumann_trial(s, d, w, DP.K, DP.G, dt);
+  ASSERT_LT(DP.yield_function(trial), 0.0);
+  EXPECT_LT(max_abs_diff(DP.update(s, d, w, 0.0, dt), trial), 1e-9);
+}
+
+TEST(DruckerPrager, PlasticStepEndsOnTheYieldSurface)
+{
+  // start on the surface under pressure p with shear only, keep shearing
+  const double p = 2.0e4;
+  const double tau = DP.alpha_phi * 3.0 * p;    // sqrt(J2) = tau for pure xy shear
+  const Sym3 s{-p, -p, -p, tau, 0.0, 0.0};
+  ASSERT_NEAR(DP.yield_function(s), 0.0, 1e-9 * p);
+  const Sym3 d{0.0, 0.0, 0.0, 0.5, 0.0, 0.0};
+  const double dt = 1e-5;
+  const Sym3 trial = jaumann_trial(s, d, Spin3::zero(), DP.K, DP.G, dt);
+  ASSERT_GT(DP.yield_function(trial), 1e-3 * p);    // elastic trial leaves the cone
+  const Sym3 next = DP.update(s, d, Spin3::zero(), 0.0, dt);
+  EXPECT_NEAR(DP.yield_function(next), 0.0, 1e-9 * p);
+  EXPECT_NEAR(next.trace(), s.trace(), 1e-9 * p);    // psi = 0: no dilatancy
+}
+
+TEST(DruckerPrager, DilatancyRaisesPressureUnderPlasticShear)
+{
+  const DruckerPrager dilatant = DruckerPrager::from_material(E, NU, PHI, 10.0 * PI / 180.0, 0.0);
+  const double p = 2.0e4;
+  const Sym3 s{-p, -p, -p, dilatant.alpha_phi * 3.0 * p, 0.0, 0.0};
+  const Sym3 d{0.0, 0.0, 0.0, 0.5, 0.0, 0.0};
+  const Sym3 next = dilatant.update(s, d, Spin3::zero(), 0.0, 1e-5);
+  EXPECT_LT(next.trace(), s.trace());    // more compressive
+  EXPECT_LE(dilatant.yield_function(next), 1e-9 * p);
+}
+
+TEST(DruckerPrager, TensionIsReturnedToTheApex)
+{
+  // cohesionless: any tensile state becomes stress-free
+  const Sym3 tension{2.0e3, 1.0e3, 5.0e2, 3.0e2, 0.0, 1.0e2};
+  const Sym3 r = DP.return_to_cone(tension);
+  EXPECT_LT(max_abs_diff(r, Sym3::zero()), 1e-9);
+  // with cohesion the apex sits at I1 = k_c / alpha_phi
+  const DruckerPrager cohesive = DruckerPrager::from_material(E, NU, PHI, 0.0, 5.0e3);
+  const Sym3 rc = cohesive.return_to_cone(Sym3::iso(1.0e6));
+  EXPECT_NEAR(rc.trace(), cohesive.k_c / cohesive.alpha_phi, 1e-6);
+  EXPECT_NEAR(second_invariant(rc), 0.0, 1e-9);
+}
+
+TEST(DruckerPrager, StatesOutsideTheConeAreScaledOntoIt)
+{
+  const Sym3 outside{-1.0e4, -3.0e4, -2.0e4, 4.0e4, -1.0e4, 2.0e4};
+  ASSERT_GT(DP.yield_function(outside), 0.0);
+  const Sym3 r = DP.return_to_cone(outside);
+  EXPECT_NEAR(DP.yield_function(r), 0.0, 1e-9 * 3.0e4);
+  EXPECT_NEAR(r.trace(), outside.trace(), 1e-9);    // pressure is kept
+  // the deviator keeps its direction
+  const Sym3 a = outside.deviator(), b = r.deviator();
+  EXPECT_NEAR(a.ddot(b) / std::sqrt(a.ddot(a) * b.ddot(b)), 1.0, 1e-12);
+}
