@@ -55,28 +55,31 @@ struct DruckerPrager {
     return s;
   }
 
-  // Rate of stress of eq. 32 at state s for strain rate d and spin w.
-  KOKKOS_INLINE_FUNCTION Sym3 stress_rate(const Sym3 &s, const Sym3 &d, const Spin3 &w) const
+  // Plastic part of the stress rate of eq. 32, lambda (9 K sin(psi) I + G S / sqrt(J2)),
+  // for a state on the yield surface that is loaded (lambda > 0, eq. 33). At the
+  // apex of the cone the surface normal is undefined: there (sqrt(J2) at round-off
+  // level against this step's elastic increment) return_to_cone does the work, so
+  // that the update stays continuous in its input.
+  KOKKOS_INLINE_FUNCTION Sym3 plastic_rate(const Sym3 &s, const Sym3 &d, double dt) const
   {
-    Sym3 rate = jaumann_rotation(s, w) + elastic_rate(d, K, G);
     const double sqrt_j2 = sqrt(second_invariant(s));
-    // plastic flow only on the yield surface (states are kept inside by return_to_cone)
+    const double increment = dt * 2.0 * G * sqrt(second_invariant(d));
+    if (sqrt_j2 <= 1.0e-8 * increment) return Sym3::zero();
     const double tol = 1.0e-10 * (k_c + fabs(alpha_phi * s.trace()) + sqrt_j2);
-    if (sqrt_j2 <= 0.0 || yield_function(s) < -tol) return rate;
+    if (yield_function(s) < -tol) return Sym3::zero();
     const Sym3 dev = s.deviator();
-    // plastic multiplier, eq. 33; only loading (lambda > 0) flows
     const double lambda = (3.0 * alpha_phi * K * d.trace() + (G / sqrt_j2) * dev.ddot(d)) /
         (27.0 * alpha_phi * K * sin_psi + G);
-    if (lambda <= 0.0) return rate;
-    return rate - lambda * (Sym3::iso(9.0 * K * sin_psi) + (G / sqrt_j2) * dev);
+    if (lambda <= 0.0) return Sym3::zero();
+    return lambda * (Sym3::iso(9.0 * K * sin_psi) + (G / sqrt_j2) * dev);
   }
 
-  // One explicit step of length dt, then back into the admissible region. The
-  // density is part of the common stress-model interface; this model ignores it.
+  // One explicit step of eq. 32 of length dt, then back into the admissible region.
+  // The density is part of the common stress-model interface; this model ignores it.
   KOKKOS_INLINE_FUNCTION Sym3 update(const Sym3 &s, const Sym3 &d, const Spin3 &w, double /*rho*/,
                                      double dt) const
   {
-    return return_to_cone(s + dt * stress_rate(s, d, w));
+    return return_to_cone(jaumann_trial(s, d, w, K, G, dt) - dt * plastic_rate(s, d, dt));
   }
 };
 

@@ -1,0 +1,44 @@
+"""Run LAMMPS with GRANSPH through tools/lmp and read what it wrote."""
+
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+LMP = os.path.join(TOP, "tools", "lmp")
+
+
+def run(input_file, variables=None, ranks=1, args=(), cwd=None):
+    """Run input_file with -var name value pairs; return stdout, fail on error."""
+    cmd = [LMP, "-in", os.path.abspath(input_file), "-log", "none", "-echo", "none"]
+    for name, value in (variables or {}).items():
+        cmd += ["-var", name, str(value)]
+    cmd += list(args)
+    if ranks > 1:
+        cmd = ["mpirun", "-np", str(ranks)] + cmd
+    proc = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True)
+    if proc.returncode != 0 or "ERROR" in proc.stdout:
+        sys.stderr.write(proc.stdout[-4000:] + proc.stderr[-4000:])
+        raise RuntimeError(f"LAMMPS failed: {' '.join(cmd)}")
+    return proc.stdout
+
+
+def read_dump(path):
+    """Last snapshot of a 'dump custom' file as a dict of columns, sorted by id."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    start = max(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
+    names = lines[start].split()[2:]
+    data = np.array([[float(w) for w in l.split()] for l in lines[start + 1:]])
+    data = data[np.argsort(data[:, names.index("id")])]
+    return {n: data[:, k] for k, n in enumerate(names)}
+
+
+def result_line(stdout):
+    """The words of the line that starts with 'result:'."""
+    for line in stdout.splitlines():
+        if line.startswith("result:"):
+            return line.split()
+    raise RuntimeError("no 'result:' line in the output")
