@@ -46,7 +46,7 @@ TEST(Jaumann, PureRotationRotatesStress)
   const int n = 20000;
   const double dt = t_end / n;
   Sym3 s = s0;
-  for (int k = 0; k < n; ++k) s = jaumann_trial(s, Sym3::zero(), w, 1e7, 1e7, dt);
+  for (int k = 0; k < n; ++k) s = jaumann_trial(s, s, Sym3::zero(), w, 1e7, 1e7, dt);
   EXPECT_LT(max_abs_diff(s, rotate_z(s0, omega * t_end)), 1e-3 * 3.0e4);
   // invariants are those of s0
   EXPECT_NEAR(s.trace(), s0.trace(), 1e-9 * 3.0e4);
@@ -56,17 +56,17 @@ TEST(Jaumann, PureRotationRotatesStress)
 TEST(Jaumann, RotationCreatesNoStressFromNothingOrFromPressure)
 {
   const Spin3 w{0.7, -1.1, 2.3};
-  const Sym3 none = jaumann_trial(Sym3::zero(), Sym3::zero(), w, 1e7, 1e7, 1e-3);
+  const Sym3 none = jaumann_trial(Sym3::zero(), Sym3::zero(), Sym3::zero(), w, 1e7, 1e7, 1e-3);
   EXPECT_EQ(max_abs_diff(none, Sym3::zero()), 0.0);
   const Sym3 p = Sym3::iso(-5.0e4);
-  EXPECT_LT(max_abs_diff(jaumann_trial(p, Sym3::zero(), w, 1e7, 1e7, 1e-3), p), 1e-9);
+  EXPECT_LT(max_abs_diff(jaumann_trial(p, p, Sym3::zero(), w, 1e7, 1e7, 1e-3), p), 1e-9);
 }
 
 TEST(Jaumann, HookeRateSplitsIntoVolumetricAndDeviatoric)
 {
   const double K = 1.0e7, G = 4.0e6, dt = 1e-4;
   const Sym3 d{1.0, -0.5, 0.25, 0.3, 0.0, -0.2};
-  const Sym3 s = jaumann_trial(Sym3::zero(), d, Spin3::zero(), K, G, dt);
+  const Sym3 s = jaumann_trial(Sym3::zero(), Sym3::zero(), d, Spin3::zero(), K, G, dt);
   EXPECT_NEAR(s.trace(), 3.0 * K * d.trace() * dt, 1e-6);
   EXPECT_NEAR(s.xy, 2.0 * G * d.xy * dt, 1e-9);
   EXPECT_NEAR(s.deviator().xx, 2.0 * G * d.deviator().xx * dt, 1e-6);
@@ -87,9 +87,9 @@ TEST(DruckerPrager, ElasticBelowTheYieldSurface)
   const Sym3 d{1e-3, -2e-3, 5e-4, 1e-3, 0.0, 0.0};
   const Spin3 w{0.1, 0.0, 0.0};
   const double dt = 1e-5;
-  const Sym3 trial = jaumann_trial(s, d, w, DP.K, DP.G, dt);
+  const Sym3 trial = jaumann_trial(s, s, d, w, DP.K, DP.G, dt);
   ASSERT_LT(DP.yield_function(trial), 0.0);
-  EXPECT_LT(max_abs_diff(DP.update(s, d, w, 0.0, dt), trial), 1e-9);
+  EXPECT_LT(max_abs_diff(DP.update(s, s, d, w, 0.0, dt), trial), 1e-9);
 }
 
 TEST(DruckerPrager, PlasticStepEndsOnTheYieldSurface)
@@ -101,9 +101,9 @@ TEST(DruckerPrager, PlasticStepEndsOnTheYieldSurface)
   ASSERT_NEAR(DP.yield_function(s), 0.0, 1e-9 * p);
   const Sym3 d{0.0, 0.0, 0.0, 0.5, 0.0, 0.0};
   const double dt = 1e-5;
-  const Sym3 trial = jaumann_trial(s, d, Spin3::zero(), DP.K, DP.G, dt);
+  const Sym3 trial = jaumann_trial(s, s, d, Spin3::zero(), DP.K, DP.G, dt);
   ASSERT_GT(DP.yield_function(trial), 1e-3 * p);    // elastic trial leaves the cone
-  const Sym3 next = DP.update(s, d, Spin3::zero(), 0.0, dt);
+  const Sym3 next = DP.update(s, s, d, Spin3::zero(), 0.0, dt);
   EXPECT_NEAR(DP.yield_function(next), 0.0, 1e-9 * p);
   EXPECT_NEAR(next.trace(), s.trace(), 1e-9 * p);    // psi = 0: no dilatancy
 }
@@ -114,7 +114,7 @@ TEST(DruckerPrager, DilatancyRaisesPressureUnderPlasticShear)
   const double p = 2.0e4;
   const Sym3 s{-p, -p, -p, dilatant.alpha_phi * 3.0 * p, 0.0, 0.0};
   const Sym3 d{0.0, 0.0, 0.0, 0.5, 0.0, 0.0};
-  const Sym3 next = dilatant.update(s, d, Spin3::zero(), 0.0, 1e-5);
+  const Sym3 next = dilatant.update(s, s, d, Spin3::zero(), 0.0, 1e-5);
   EXPECT_LT(next.trace(), s.trace());    // more compressive
   EXPECT_LE(dilatant.yield_function(next), 1e-9 * p);
 }

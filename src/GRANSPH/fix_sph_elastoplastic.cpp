@@ -13,7 +13,7 @@ FixSPHElastoplastic::FixSPHElastoplastic(LAMMPS *lmp, int narg, char **arg) :
 {
 }
 
-void FixSPHElastoplastic::update_stress(double dt)
+void FixSPHElastoplastic::update_stress(double dt, StressStep from)
 {
-  update_stress_with(model, dt);
+  update_stress_with(model, dt, from);
 }

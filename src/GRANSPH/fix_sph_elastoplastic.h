@@ -23,7 +23,7 @@ class FixSPHElastoplastic : public FixSPHIntegrate {
   const GRANSPH::DruckerPrager model;
 
  protected:
-  void update_stress(double dt) override;
+  void update_stress(double dt, StressStep from) override;
 };
 
 }    // namespace LAMMPS_NS

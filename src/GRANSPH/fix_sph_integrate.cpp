@@ -8,8 +8,8 @@
    mid-point evaluation, t-dt/2 (at the first step of a run: the setup
    evaluation at t). That changes the predicted mid-point state by O(dt^2), so the
    corrector, which integrates from t with the mid-point rates, keeps the
-   scheme second order at one rate evaluation per step; the unit test
-   GRANSPHIntegrator.SecondOrder shows the order.
+   scheme second order at one rate evaluation per step (the stress too, see
+   final_integrate); unittest/physics/test_time_order.py shows the order.
 ------------------------------------------------------------------------- */
 
 #include "fix_sph_integrate.h"
@@ -156,13 +156,17 @@ void FixSPHIntegrate::initial_integrate(int /*vflag*/)
     }
     start[i][RHO_START] = state[i][RHO];
     state[i][RHO] += half * rates[i][DRHO];
+    for (int k = 0; k < 6; ++k) start[i][SIGMA_START + k] = state[i][SIGMA + k];
   }
-  update_stress(half);
+  update_stress(half, FROM_CURRENT);
 }
 
 /* ----------------------------------------------------------------------
-   corrector, eqs. 15-18: from t with the mid-point rates; the stress continues
-   from its predicted value (eq. 18)
+   corrector, eqs. 15-17: from t with the mid-point rates. The stress takes the
+   same full step from t, with the Jaumann rotation and plastic flow evaluated at
+   the predicted stress. The paper's eq. 18 instead continues from the predicted
+   stress with the mid-point rate for the second half step, which saves storing
+   sigma_n but is only first order: sigma_n + dt/2 (rate_n + rate_{n+1/2}).
 ------------------------------------------------------------------------- */
 
 void FixSPHIntegrate::final_integrate()
@@ -187,7 +191,7 @@ void FixSPHIntegrate::final_integrate()
     }
     state[i][RHO] = start[i][RHO_START] + dt * rates[i][DRHO];
   }
-  update_stress(0.5 * dt);
+  update_stress(dt, FROM_START);
   check_finite();
 }
 
@@ -299,7 +303,8 @@ void FixSPHIntegrate::init_geostatic_stress()
   }
 }
 
-// A non-finite state stops the run with the atom's ID rather than spreading NaNs.
+// A non-finite state or a non-positive density stops the run with the atom's ID
+// rather than spreading NaNs.
 void FixSPHIntegrate::check_finite() const
 {
   double **x = atom->x;
@@ -309,10 +314,11 @@ void FixSPHIntegrate::check_finite() const
     if (!(mask[i] & groupbit)) continue;
     double sum = x[i][0] + x[i][1] + x[i][2] + v[i][0] + v[i][1] + v[i][2];
     for (int k = 0; k < NSTATE; ++k) sum += state[i][k];
-    if (!std::isfinite(sum))
-      error->one(FLERR, "Fix {}: atom {} has a non-finite state (rho {}, v {} {} {}) at step {}",
-                 style, atom->tag[i], state[i][RHO], v[i][0], v[i][1], v[i][2],
-                 update->ntimestep);
+    if (!std::isfinite(sum) || !(state[i][RHO] > 0.0))
+      error->one(FLERR,
+                 "Fix {}: atom {} has a non-finite state or non-positive density (rho {}, v {} {} "
+                 "{}) at step {}",
+                 style, atom->tag[i], state[i][RHO], v[i][0], v[i][1], v[i][2], update->ntimestep);
   }
 }
 

@@ -23,7 +23,7 @@ class FixSPHIntegrate : public Fix {
   // exposed as the fix's per-atom output (f_ID[1] = rho, f_ID[2..7] = stress).
   enum { RHO = 0, SIGMA = 1, NSTATE = 7 };
   enum { DRHO = 0, STRAIN = 1, SPIN = 7, NRATES = 10 };
-  enum { V_START = 0, RHO_START = 3, WALL_V = 4, NSTART = 7 };
+  enum { V_START = 0, RHO_START = 3, SIGMA_START = 4, WALL_V = 10, NSTART = 13 };
 
   FixSPHIntegrate(class LAMMPS *, int, char **);
   ~FixSPHIntegrate() override;
@@ -52,7 +52,7 @@ class FixSPHIntegrate : public Fix {
   // What sph/granular reads and writes.
   double **state;    // rho, sigma (xx yy zz xy xz yz)
   double **rates;    // drho/dt, strain rate (6), spin (xy xz yz)
-  double **start;    // v and rho at the start of the step; last wall velocity
+  double **start;    // v, rho, sigma at the start of the step; last wall velocity
   int wallbit;       // group bit of the dummy-wall particles (0: no walls)
   GranSPHMaterial material;
 
@@ -61,20 +61,24 @@ class FixSPHIntegrate : public Fix {
   void gravity_vector(double *g) const;    // sum of all fix gravity accelerations
 
  protected:
-  // Advance the stress of every granular particle by dt with the current rates.
-  virtual void update_stress(double dt) = 0;
+  // Advance the stress of every granular particle with the current rates: by dt
+  // from the current stress (predictor), or by dt from the stress at the start of
+  // the step with the rate taken at the current, mid-point stress (corrector).
+  enum StressStep { FROM_CURRENT, FROM_START };
+  virtual void update_stress(double dt, StressStep from) = 0;
 
   // Shared loop for the constitutive models: sigma <- model.update(...)
-  template <class Model> void update_stress_with(const Model &model, double dt)
+  template <class Model> void update_stress_with(const Model &model, double dt, StressStep from)
   {
     const int nlocal = atom->nlocal;
     const int *const mask = atom->mask;
     for (int i = 0; i < nlocal; ++i) {
       if (!(mask[i] & groupbit)) continue;
       const GRANSPH::Sym3 s = GRANSPH::Sym3::load(&state[i][SIGMA]);
+      const GRANSPH::Sym3 s0 = from == FROM_START ? GRANSPH::Sym3::load(&start[i][SIGMA_START]) : s;
       const GRANSPH::Sym3 d = GRANSPH::Sym3::load(&rates[i][STRAIN]);
       const GRANSPH::Spin3 w = GRANSPH::Spin3::load(&rates[i][SPIN]);
-      model.update(s, d, w, state[i][RHO], dt).store(&state[i][SIGMA]);
+      model.update(s0, s, d, w, state[i][RHO], dt).store(&state[i][SIGMA]);
     }
   }
 

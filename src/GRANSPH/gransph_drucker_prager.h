@@ -74,12 +74,13 @@ struct DruckerPrager {
     return lambda * (Sym3::iso(9.0 * K * sin_psi) + (G / sqrt_j2) * dev);
   }
 
-  // One explicit step of eq. 32 of length dt, then back into the admissible region.
-  // The density is part of the common stress-model interface; this model ignores it.
-  KOKKOS_INLINE_FUNCTION Sym3 update(const Sym3 &s, const Sym3 &d, const Spin3 &w, double /*rho*/,
-                                     double dt) const
+  // A step of eq. 32 of length dt from s0 with the rate evaluated at s (see
+  // jaumann_trial), then back into the admissible region. The density is part of
+  // the common stress-model interface; this model ignores it.
+  KOKKOS_INLINE_FUNCTION Sym3 update(const Sym3 &s0, const Sym3 &s, const Sym3 &d,
+                                     const Spin3 &w, double /*rho*/, double dt) const
   {
-    return return_to_cone(jaumann_trial(s, d, w, K, G, dt) - dt * plastic_rate(s, d, dt));
+    return return_to_cone(jaumann_trial(s0, s, d, w, K, G, dt) - dt * plastic_rate(s, d, dt));
   }
 };
 

@@ -113,11 +113,13 @@ KOKKOS_INLINE_FUNCTION Sym3 elastic_rate(const Sym3 &d, double K, double G)
   return 2.0 * G * d.deviator() + Sym3::iso(K * d.trace());
 }
 
-// Trial stress of eq. 23: one explicit step of the Jaumann rate with Hooke's law.
-KOKKOS_INLINE_FUNCTION Sym3 jaumann_trial(const Sym3 &s, const Sym3 &d, const Spin3 &w, double K,
-                                          double G, double dt)
+// Trial stress of eq. 23: a step of length dt of the Jaumann rate with Hooke's law
+// from s0, with the rotation evaluated at s (s = s0 for an explicit step, the
+// mid-point stress for the corrector's second-order step).
+KOKKOS_INLINE_FUNCTION Sym3 jaumann_trial(const Sym3 &s0, const Sym3 &s, const Sym3 &d,
+                                          const Spin3 &w, double K, double G, double dt)
 {
-  return s + dt * (jaumann_rotation(s, w) + elastic_rate(d, K, G));
+  return s0 + dt * (jaumann_rotation(s, w) + elastic_rate(d, K, G));
 }
 
 }    // namespace GRANSPH

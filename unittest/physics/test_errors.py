@@ -1,0 +1,100 @@
+"""Bad input stops LAMMPS with an error that names the problem, never a crash,
+a hang or silent NaNs."""
+
+import os
+import re
+import subprocess
+import tempfile
+
+import gransph_run
+
+BASE = """plugin load gransphplugin.so
+units si
+atom_style atomic
+atom_modify map array
+boundary f f f
+{comm}
+region box block 0 0.1 0 0.1 -0.03 0.1 units box
+create_box 2 box
+lattice sc 0.01 origin 0.5 0.5 0.5
+region sand block 0 0.05 0 0.05 0 0.05 units box
+region floor block 0 0.05 0 0.05 -0.03 0 units box
+create_atoms 1 region sand
+create_atoms 2 region floor
+group sand type 1
+group floor type 2
+{mass}
+pair_style {pair_style}
+pair_coeff {pair_coeff}
+fix gravity sand gravity 9.81 vector 0 0 -1
+{fix}
+{run}
+"""
+
+GOOD = dict(comm="comm_modify vel yes", mass="mass * 2.45e-3", pair_style="sph/granular 0.012",
+            pair_coeff="* *", run="run 10",
+            fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 walls floor")
+
+CASES = [
+    ("smoothing length <= 0", dict(pair_style="sph/granular 0"), "smoothing length h must be > 0"),
+    ("unknown pair keyword", dict(pair_style="sph/granular 0.012 foo 1"), "unknown keyword foo"),
+    ("negative viscosity", dict(pair_style="sph/granular 0.012 visc -1 0"), "must be >= 0"),
+    ("pair_coeff with values", dict(pair_coeff="* * 1.0"), "expected I J only"),
+    ("no ghost velocities", dict(comm=""), "comm_modify vel yes"),
+    ("no integrator fix", dict(fix=""), "needs a GRANSPH integrator"),
+    ("missing material", dict(fix="fix sph sand sph/elastoplastic sand.gransph Nosuch"),
+     "material Nosuch not found"),
+    ("missing material file", dict(fix="fix sph sand sph/elastoplastic nosuch.gransph Chen2019"),
+     "cannot open"),
+    ("unknown walls group", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 walls nosuch"),
+     "walls group nosuch does not exist"),
+    ("walls = fix group", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 walls sand"),
+     "walls group must differ"),
+    ("bad cfl", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 cfl 2"), "cfl must be in"),
+    ("negative density", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 rho -1"),
+     "rho must be > 0"),
+    ("keyword without value", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 walls"),
+     "keyword walls needs a value"),
+    ("unknown fix keyword", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 foo 1"),
+     "unknown keyword foo"),
+    ("two integrators", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019\n"
+                                 "fix sph2 floor sph/elastoplastic sand.gransph Chen2019"),
+     "Only one GRANSPH integrator"),
+    ("invalid material values", dict(fix="fix sph sand sph/elastoplastic {bad} Bad"),
+     "Poisson's ratio must be in"),
+    ("a blow-up is caught with the atom ID",    # expansion faster than dt can follow: rho < 0
+     dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 walls floor cfl none",
+          run="variable vx atom 1000*(x-0.025)\nvariable vy atom 1000*(y-0.025)\n"
+              "variable vz atom 1000*(z-0.025)\nvelocity sand set v_vx v_vy v_vz\n"
+              "timestep 1e-3\nrun 10"),
+     r"atom \d+ has a non-finite state or non-positive density"),
+]
+
+
+def run_case(tmp, fields):
+    text = BASE.format(**{**GOOD, **fields})
+    text = text.replace("{bad}", os.path.join(tmp, "bad.gransph"))
+    path = os.path.join(tmp, "in.case")
+    with open(path, "w") as f:
+        f.write(text)
+    # line-buffered: error->one ends in MPI_Abort, which does not flush a pipe
+    proc = subprocess.run(["stdbuf", "-oL", gransph_run.LMP, "-in", path, "-log", "none", "-echo", "none"],
+                          cwd=tmp, capture_output=True, text=True, timeout=120)
+    return proc.returncode, proc.stdout + proc.stderr
+
+
+passed = failed = 0
+with tempfile.TemporaryDirectory() as tmp:
+    with open(os.path.join(tmp, "bad.gransph"), "w") as f:
+        f.write("# UNITS: si\nBad 2450 20e6 0.6 37 0 0 1500 1.1 0.6 0.8\n")
+    code, out = run_case(tmp, {})
+    assert code == 0 and "ERROR" not in out, "the good input fails:\n" + out[-2000:]
+    for name, fields, expected in CASES:
+        code, out = run_case(tmp, fields)
+        errors = [l for l in out.splitlines() if "ERROR" in l]
+        ok = code != 0 and errors and re.search(expected, errors[0])
+        print(f"{'ok    ' if ok else 'FAILED'} {name}: {errors[0] if errors else out[-300:]}")
+        passed += bool(ok)
+        failed += not ok
+print(f"{passed} passed, {failed} failed")
+raise SystemExit(1 if failed else 0)
