@@ -1,6 +1,7 @@
 // Unit tests of the Jaumann rate and the Drucker-Prager stress update.
 
 #include "gransph_drucker_prager.h"
+#include "gransph_phase_change.h"
 #include "gransph_tensor.h"
 
 #include <gtest/gtest.h>
@@ -89,7 +90,9 @@ TEST(DruckerPrager, ElasticBelowTheYieldSurface)
   const double dt = 1e-5;
   const Sym3 trial = jaumann_trial(s, s, d, w, DP.K, DP.G, dt);
   ASSERT_LT(DP.yield_function(trial), 0.0);
-  EXPECT_LT(max_abs_diff(DP.update(s, s, d, w, 0.0, dt), trial), 1e-9);
+  Regime regime;
+  EXPECT_LT(max_abs_diff(DP.update(s, s, d, w, 0.0, dt, regime), trial), 1e-9);
+  EXPECT_EQ(regime, ELASTIC);
 }
 
 TEST(DruckerPrager, PlasticStepEndsOnTheYieldSurface)
@@ -103,8 +106,10 @@ TEST(DruckerPrager, PlasticStepEndsOnTheYieldSurface)
   const double dt = 1e-5;
   const Sym3 trial = jaumann_trial(s, s, d, Spin3::zero(), DP.K, DP.G, dt);
   ASSERT_GT(DP.yield_function(trial), 1e-3 * p);    // elastic trial leaves the cone
-  const Sym3 next = DP.update(s, s, d, Spin3::zero(), 0.0, dt);
+  Regime regime;
+  const Sym3 next = DP.update(s, s, d, Spin3::zero(), 0.0, dt, regime);
   EXPECT_NEAR(DP.yield_function(next), 0.0, 1e-9 * p);
+  EXPECT_EQ(regime, PLASTIC);
   EXPECT_NEAR(next.trace(), s.trace(), 1e-9 * p);    // psi = 0: no dilatancy
 }
 
@@ -114,7 +119,8 @@ TEST(DruckerPrager, DilatancyRaisesPressureUnderPlasticShear)
   const double p = 2.0e4;
   const Sym3 s{-p, -p, -p, dilatant.alpha_phi * 3.0 * p, 0.0, 0.0};
   const Sym3 d{0.0, 0.0, 0.0, 0.5, 0.0, 0.0};
-  const Sym3 next = dilatant.update(s, s, d, Spin3::zero(), 0.0, 1e-5);
+  Regime regime;
+  const Sym3 next = dilatant.update(s, s, d, Spin3::zero(), 0.0, 1e-5, regime);
   EXPECT_LT(next.trace(), s.trace());    // more compressive
   EXPECT_LE(dilatant.yield_function(next), 1e-9 * p);
 }
@@ -123,11 +129,13 @@ TEST(DruckerPrager, TensionIsReturnedToTheApex)
 {
   // cohesionless: any tensile state becomes stress-free
   const Sym3 tension{2.0e3, 1.0e3, 5.0e2, 3.0e2, 0.0, 1.0e2};
-  const Sym3 r = DP.return_to_cone(tension);
+  Regime regime = ELASTIC;
+  const Sym3 r = DP.return_to_cone(tension, regime);
   EXPECT_LT(max_abs_diff(r, Sym3::zero()), 1e-9);
+  EXPECT_EQ(regime, DISCONNECTED);
   // with cohesion the apex sits at I1 = k_c / alpha_phi
   const DruckerPrager cohesive = DruckerPrager::from_material(E, NU, PHI, 0.0, 5.0e3);
-  const Sym3 rc = cohesive.return_to_cone(Sym3::iso(1.0e6));
+  const Sym3 rc = cohesive.return_to_cone(Sym3::iso(1.0e6), regime);
   EXPECT_NEAR(rc.trace(), cohesive.k_c / cohesive.alpha_phi, 1e-6);
   EXPECT_NEAR(second_invariant(rc), 0.0, 1e-9);
 }
@@ -136,8 +144,10 @@ TEST(DruckerPrager, StatesOutsideTheConeAreScaledOntoIt)
 {
   const Sym3 outside{-1.0e4, -3.0e4, -2.0e4, 4.0e4, -1.0e4, 2.0e4};
   ASSERT_GT(DP.yield_function(outside), 0.0);
-  const Sym3 r = DP.return_to_cone(outside);
+  Regime regime = ELASTIC;
+  const Sym3 r = DP.return_to_cone(outside, regime);
   EXPECT_NEAR(DP.yield_function(r), 0.0, 1e-9 * 3.0e4);
+  EXPECT_EQ(regime, PLASTIC);
   EXPECT_NEAR(r.trace(), outside.trace(), 1e-9);    // pressure is kept
   // the deviator keeps its direction
   const Sym3 a = outside.deviator(), b = r.deviator();

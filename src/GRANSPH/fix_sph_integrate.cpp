@@ -81,7 +81,7 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   peratom_flag = 1;
   size_peratom_cols = NSTATE;
   peratom_freq = 1;
-  comm_forward = NSTATE;
+  comm_forward = NCOMM;
   nevery = 1;
 
   grow_arrays(atom->nmax);
@@ -313,7 +313,7 @@ void FixSPHIntegrate::check_finite() const
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
     double sum = x[i][0] + x[i][1] + x[i][2] + v[i][0] + v[i][1] + v[i][2];
-    for (int k = 0; k < NSTATE; ++k) sum += state[i][k];
+    for (int k = 0; k < NCOMM; ++k) sum += state[i][k];
     if (!std::isfinite(sum) || !(state[i][RHO] > 0.0))
       error->one(FLERR,
                  "Fix {}: atom {} has a non-finite state or non-positive density (rho {}, v {} {} "
@@ -345,7 +345,7 @@ void FixSPHIntegrate::copy_arrays(int i, int j, int /*delflag*/)
 void FixSPHIntegrate::set_arrays(int i)
 {
   state[i][RHO] = rho_init;
-  for (int k = 1; k < NSTATE; ++k) state[i][k] = 0.0;
+  for (int k = 1; k < NSTATE; ++k) state[i][k] = 0.0;    // stress-free, ELASTIC
   for (int k = 0; k < NRATES; ++k) rates[i][k] = 0.0;
   for (int k = 0; k < NSTART; ++k) start[i][k] = 0.0;
 }
@@ -404,7 +404,7 @@ int FixSPHIntegrate::pack_forward_comm(int n, int *list, double *buf, int /*pbc_
 {
   int m = 0;
   for (int i = 0; i < n; ++i)
-    for (int k = 0; k < NSTATE; ++k) buf[m++] = state[list[i]][k];
+    for (int k = 0; k < NCOMM; ++k) buf[m++] = state[list[i]][k];
   return m;
 }
 
@@ -412,7 +412,7 @@ void FixSPHIntegrate::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
   for (int i = first; i < first + n; ++i)
-    for (int k = 0; k < NSTATE; ++k) state[i][k] = buf[m++];
+    for (int k = 0; k < NCOMM; ++k) state[i][k] = buf[m++];
 }
 
 double FixSPHIntegrate::memory_usage()

@@ -13,15 +13,16 @@
 #include "atom.h"
 #include "fix.h"
 #include "gransph_material.h"
-#include "gransph_tensor.h"
+#include "gransph_stress_model.h"
 
 namespace LAMMPS_NS {
 
 class FixSPHIntegrate : public Fix {
  public:
-  // Columns of the per-atom arrays. STATE is forward-communicated, restarted and
-  // exposed as the fix's per-atom output (f_ID[1] = rho, f_ID[2..7] = stress).
-  enum { RHO = 0, SIGMA = 1, NSTATE = 7 };
+  // Columns of the per-atom arrays. STATE is restarted and is the fix's per-atom
+  // output (f_ID[1] = rho, f_ID[2..7] = stress, f_ID[8] = GRANSPH::Regime); its
+  // first NCOMM columns are forward-communicated to ghosts.
+  enum { RHO = 0, SIGMA = 1, REGIME = 7, NSTATE = 8, NCOMM = 7 };
   enum { DRHO = 0, STRAIN = 1, SPIN = 7, NRATES = 10 };
   enum { V_START = 0, RHO_START = 3, SIGMA_START = 4, WALL_V = 10, NSTART = 13 };
 
@@ -50,7 +51,7 @@ class FixSPHIntegrate : public Fix {
   double memory_usage() override;
 
   // What sph/granular reads and writes.
-  double **state;    // rho, sigma (xx yy zz xy xz yz)
+  double **state;    // rho, sigma (xx yy zz xy xz yz), regime
   double **rates;    // drho/dt, strain rate (6), spin (xy xz yz)
   double **start;    // v, rho, sigma at the start of the step; last wall velocity
   int wallbit;       // group bit of the dummy-wall particles (0: no walls)
@@ -78,7 +79,9 @@ class FixSPHIntegrate : public Fix {
       const GRANSPH::Sym3 s0 = from == FROM_START ? GRANSPH::Sym3::load(&start[i][SIGMA_START]) : s;
       const GRANSPH::Sym3 d = GRANSPH::Sym3::load(&rates[i][STRAIN]);
       const GRANSPH::Spin3 w = GRANSPH::Spin3::load(&rates[i][SPIN]);
-      model.update(s0, s, d, w, state[i][RHO], dt).store(&state[i][SIGMA]);
+      GRANSPH::Regime regime;
+      model.update(s0, s, d, w, state[i][RHO], dt, regime).store(&state[i][SIGMA]);
+      state[i][REGIME] = regime;
     }
   }
 

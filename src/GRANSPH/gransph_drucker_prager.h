@@ -9,7 +9,7 @@
 #ifndef LMP_GRANSPH_DRUCKER_PRAGER_H
 #define LMP_GRANSPH_DRUCKER_PRAGER_H
 
-#include "gransph_tensor.h"
+#include "gransph_stress_model.h"
 
 namespace GRANSPH {
 
@@ -37,20 +37,25 @@ struct DruckerPrager {
 
   // Bui's treatment of states outside the admissible region: tension beyond the
   // apex of the cone is cut back to the apex (tension cracking), then a deviator
-  // outside the cone is scaled back onto it.
-  KOKKOS_INLINE_FUNCTION Sym3 return_to_cone(Sym3 s) const
+  // outside the cone is scaled back onto it. Raises regime accordingly.
+  KOKKOS_INLINE_FUNCTION Sym3 return_to_cone(Sym3 s, Regime &regime) const
   {
     if (alpha_phi > 0.0) {
-      const double i1_apex = k_c / alpha_phi;
-      const double excess = s.trace() - i1_apex;
-      if (excess > 0.0) s = s - Sym3::iso(excess / 3.0);
+      const double excess = s.trace() - k_c / alpha_phi;
+      if (excess > 0.0) {
+        s = s - Sym3::iso(excess / 3.0);
+        regime = DISCONNECTED;
+      }
     }
     const double strength = k_c - alpha_phi * s.trace();
+    if (strength <= 0.0) {
+      regime = DISCONNECTED;
+      return Sym3::iso(s.trace() / 3.0);
+    }
     const double sqrt_j2 = sqrt(second_invariant(s));
-    if (strength <= 0.0) return Sym3::iso(s.trace() / 3.0);
     if (sqrt_j2 > strength) {
-      const Sym3 dev = s.deviator();
-      return Sym3::iso(s.trace() / 3.0) + (strength / sqrt_j2) * dev;
+      if (regime == ELASTIC) regime = PLASTIC;
+      return Sym3::iso(s.trace() / 3.0) + (strength / sqrt_j2) * s.deviator();
     }
     return s;
   }
@@ -75,12 +80,15 @@ struct DruckerPrager {
   }
 
   // A step of eq. 32 of length dt from s0 with the rate evaluated at s (see
-  // jaumann_trial), then back into the admissible region. The density is part of
-  // the common stress-model interface; this model ignores it.
+  // jaumann_trial), then back into the admissible region; the stress-model
+  // interface of gransph_stress_model.h. This model ignores the density.
   KOKKOS_INLINE_FUNCTION Sym3 update(const Sym3 &s0, const Sym3 &s, const Sym3 &d,
-                                     const Spin3 &w, double /*rho*/, double dt) const
+                                     const Spin3 &w, double /*rho*/, double dt,
+                                     Regime &regime) const
   {
-    return return_to_cone(jaumann_trial(s0, s, d, w, K, G, dt) - dt * plastic_rate(s, d, dt));
+    const Sym3 plastic = plastic_rate(s, d, dt);
+    regime = plastic.ddot(plastic) > 0.0 ? PLASTIC : ELASTIC;
+    return return_to_cone(jaumann_trial(s0, s, d, w, K, G, dt) - dt * plastic, regime);
   }
 };
 

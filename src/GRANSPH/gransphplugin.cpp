@@ -7,6 +7,7 @@
 #include "version.h"
 
 #include "fix_sph_elastoplastic.h"
+#include "fix_sph_phasechange.h"
 #include "pair_sph_granular.h"
 
 using namespace LAMMPS_NS;
@@ -52,4 +53,7 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   register_style(reg, lmp, handle, "fix", "sph/elastoplastic",
                  "GRANSPH integrator, Drucker-Prager elastoplastic model",
                  (void *) &fix_creator<FixSPHElastoplastic>, true);
+  register_style(reg, lmp, handle, "fix", "sph/phasechange",
+                 "GRANSPH integrator, Dunatunga-Kamrin phase-change model",
+                 (void *) &fix_creator<FixSPHPhaseChange>, true);
 }

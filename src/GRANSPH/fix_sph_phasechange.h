@@ -1,0 +1,33 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: granular SPH integrator with the phase-change model of
+   Dunatunga & Kamrin (2015).
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(sph/phasechange,FixSPHPhaseChange);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_SPH_PHASECHANGE_H
+#define LMP_FIX_SPH_PHASECHANGE_H
+
+#include "fix_sph_integrate.h"
+#include "gransph_phase_change.h"
+
+namespace LAMMPS_NS {
+
+class FixSPHPhaseChange : public FixSPHIntegrate {
+ public:
+  FixSPHPhaseChange(class LAMMPS *, int, char **);
+
+  const GRANSPH::PhaseChange model;
+
+ protected:
+  void update_stress(double dt, StressStep from) override;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

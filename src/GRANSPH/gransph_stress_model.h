@@ -1,0 +1,32 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: what every constitutive model provides.
+
+   A model is a small value type with
+
+     Sym3 update(const Sym3 &s0, const Sym3 &s, const Sym3 &d, const Spin3 &w,
+                 double rho, double dt, Regime &regime) const;
+
+   the stress after a step of length dt from s0, with the Jaumann rotation and
+   the flow direction evaluated at s, for strain rate d, spin w and density rho;
+   it also says in which regime the particle ended the step. The integrator
+   fixes and their Kokkos twins call it per particle.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_GRANSPH_STRESS_MODEL_H
+#define LMP_GRANSPH_STRESS_MODEL_H
+
+#include "gransph_tensor.h"
+
+namespace GRANSPH {
+
+// Per-particle state of the material after a stress update (a per-atom output).
+enum Regime {
+  ELASTIC = 0,        // elastic, "solid" (phase change); inside the yield surface
+  PLASTIC = 1,        // on the yield surface, flowing
+  DISCONNECTED = 2    // stress-free: below rho_c or in tension (phase change), or
+                      // cut off at the apex of the Drucker-Prager cone
+};
+
+}    // namespace GRANSPH
+
+#endif
