@@ -116,6 +116,13 @@ void FixSPHIntegrate::init()
   for (int i = 0; i < modify->nfix; ++i)
     if (dynamic_cast<FixSPHIntegrate *>(modify->fix[i])) ++count;
   if (count > 1) error->all(FLERR, "Only one GRANSPH integrator fix may be defined");
+
+  int overlap = 0;
+  for (int i = 0; i < atom->nlocal; ++i)
+    if ((atom->mask[i] & groupbit) && (atom->mask[i] & wallbit)) overlap = 1;
+  int any = 0;
+  MPI_Allreduce(&overlap, &any, 1, MPI_INT, MPI_MAX, world);
+  if (any) error->all(FLERR, "Fix {}: an atom is in both the fix group and the walls group", style);
 }
 
 // before the setup force evaluation, so that the first rates see the initial stress
@@ -225,12 +232,15 @@ double FixSPHIntegrate::smoothing_length() const
   return *h;
 }
 
-// sum of the accelerations of all fix gravity instances
+// sum of the accelerations of the fix gravity instances acting on the grains
+// (defined on this fix's group or on all)
 void FixSPHIntegrate::gravity_vector(double *g) const
 {
   g[0] = g[1] = g[2] = 0.0;
   for (int i = 0; i < modify->nfix; ++i) {
-    if (!utils::strmatch(modify->fix[i]->style, "^gravity")) continue;
+    const Fix *fix = modify->fix[i];
+    if (!utils::strmatch(fix->style, "^gravity")) continue;
+    if (fix->igroup != igroup && fix->igroup != 0) continue;
     int dim = 0;
     auto gvec = static_cast<double *>(modify->fix[i]->extract("gvec", dim));
     if (gvec)
@@ -368,13 +378,12 @@ int FixSPHIntegrate::unpack_exchange(int nlocal, double *buf)
   return m;
 }
 
-// restart files hold the state and the last wall velocity; rates are recomputed at setup
+// restart files hold the state; rates and the wall velocity history start anew at setup
 int FixSPHIntegrate::pack_restart(int i, double *buf)
 {
   int m = 0;
-  buf[m++] = NSTATE + 3 + 1;
+  buf[m++] = NSTATE + 1;
   for (int k = 0; k < NSTATE; ++k) buf[m++] = state[i][k];
-  for (int k = 0; k < 3; ++k) buf[m++] = start[i][WALL_V + k];
   return m;
 }
 
@@ -385,18 +394,17 @@ void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   m++;
   for (int k = 0; k < NSTATE; ++k) state[nlocal][k] = extra[nlocal][m++];
-  for (int k = 0; k < 3; ++k) start[nlocal][WALL_V + k] = extra[nlocal][m++];
   restored = 1;
 }
 
 int FixSPHIntegrate::size_restart(int /*nlocal*/)
 {
-  return NSTATE + 3 + 1;
+  return NSTATE + 1;
 }
 
 int FixSPHIntegrate::maxsize_restart()
 {
-  return NSTATE + 3 + 1;
+  return NSTATE + 1;
 }
 
 int FixSPHIntegrate::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,

@@ -48,6 +48,9 @@ CASES = [
      "cannot open"),
     ("unknown walls group", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 walls nosuch"),
      "walls group nosuch does not exist"),
+    ("atoms in both groups", dict(fix="group both union sand floor\n"
+                                      "fix sph both sph/elastoplastic sand.gransph Chen2019 walls floor"),
+     "in both the fix group and the walls group"),
     ("walls = fix group", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 walls sand"),
      "walls group must differ"),
     ("bad cfl", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 cfl 2"), "cfl must be in"),
