@@ -11,20 +11,12 @@ FixStyle(sph/elastoplastic,FixSPHElastoplastic);
 #ifndef LMP_FIX_SPH_ELASTOPLASTIC_H
 #define LMP_FIX_SPH_ELASTOPLASTIC_H
 
-#include "fix_sph_integrate.h"
+#include "fix_sph_model.h"
 #include "gransph_drucker_prager.h"
 
 namespace LAMMPS_NS {
 
-class FixSPHElastoplastic : public FixSPHIntegrate {
- public:
-  FixSPHElastoplastic(class LAMMPS *, int, char **);
-
-  const GRANSPH::DruckerPrager model;
-
- protected:
-  void update_stress(double dt, StressStep from) override;
-};
+using FixSPHElastoplastic = FixSPHModel<GRANSPH::DruckerPrager>;
 
 }    // namespace LAMMPS_NS
 

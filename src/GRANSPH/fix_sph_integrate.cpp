@@ -1,18 +1,11 @@
 /* ----------------------------------------------------------------------
-   GRANSPH: shared base of the granular SPH integrators.
-
-   Time integration. The paper's predictor-corrector (eqs. 11-18) evaluates the
-   rates twice per step: at t for the predictor, at t+dt/2 for the corrector.
-   A LAMMPS step evaluates the pair once (between initial_integrate and
-   final_integrate), so the predictor here uses the rates of the previous step's
-   mid-point evaluation, t-dt/2 (at the first step of a run: the setup
-   evaluation at t). That changes the predicted mid-point state by O(dt^2), so the
-   corrector, which integrates from t with the mid-point rates, keeps the
-   scheme second order at one rate evaluation per step (the stress too, see
-   final_integrate); unittest/physics/test_time_order.py shows the order.
+   GRANSPH: shared base of the granular SPH integrators: per-atom state, its
+   migration, communication and restart, and the CFL timestep.
 ------------------------------------------------------------------------- */
 
 #include "fix_sph_integrate.h"
+
+#include "gransph_integrator.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -137,71 +130,6 @@ void FixSPHIntegrate::setup(int /*vflag*/)
   reset_cfl_timestep();
 }
 
-/* ----------------------------------------------------------------------
-   predictor, eqs. 11-14: half a step with the latest rates
-------------------------------------------------------------------------- */
-
-void FixSPHIntegrate::initial_integrate(int /*vflag*/)
-{
-  double **x = atom->x;
-  double **v = atom->v;
-  double **f = atom->f;
-  const double *rmass = atom->rmass;
-  const double *mass = atom->mass;
-  const int *type = atom->type;
-  const int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  const double half = 0.5 * update->dt;
-
-  for (int i = 0; i < nlocal; ++i) {
-    if (!(mask[i] & groupbit)) continue;
-    const double dtfm = half * force->ftm2v / (rmass ? rmass[i] : mass[type[i]]);
-    for (int a = 0; a < 3; ++a) {
-      start[i][V_START + a] = v[i][a];
-      x[i][a] += half * v[i][a];
-      v[i][a] += dtfm * f[i][a];
-    }
-    start[i][RHO_START] = state[i][RHO];
-    state[i][RHO] += half * rates[i][DRHO];
-    for (int k = 0; k < 6; ++k) start[i][SIGMA_START + k] = state[i][SIGMA + k];
-  }
-  update_stress(half, FROM_CURRENT);
-}
-
-/* ----------------------------------------------------------------------
-   corrector, eqs. 15-17: from t with the mid-point rates. The stress takes the
-   same full step from t, with the Jaumann rotation and plastic flow evaluated at
-   the predicted stress. The paper's eq. 18 instead continues from the predicted
-   stress with the mid-point rate for the second half step, which saves storing
-   sigma_n but is only first order: sigma_n + dt/2 (rate_n + rate_{n+1/2}).
-------------------------------------------------------------------------- */
-
-void FixSPHIntegrate::final_integrate()
-{
-  double **x = atom->x;
-  double **v = atom->v;
-  double **f = atom->f;
-  const double *rmass = atom->rmass;
-  const double *mass = atom->mass;
-  const int *type = atom->type;
-  const int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  const double dt = update->dt;
-
-  for (int i = 0; i < nlocal; ++i) {
-    if (!(mask[i] & groupbit)) continue;
-    const double dtfm = dt * force->ftm2v / (rmass ? rmass[i] : mass[type[i]]);
-    for (int a = 0; a < 3; ++a) {
-      // x_{n+1} = x_n + dt v_{n+1/2}, with x_n = x_{n+1/2} - dt/2 v_n
-      x[i][a] += dt * (v[i][a] - 0.5 * start[i][V_START + a]);
-      v[i][a] = start[i][V_START + a] + dtfm * f[i][a];
-    }
-    state[i][RHO] = start[i][RHO_START] + dt * rates[i][DRHO];
-  }
-  update_stress(dt, FROM_START);
-  check_finite();
-}
-
 void FixSPHIntegrate::end_of_step()
 {
   reset_cfl_timestep();
@@ -213,11 +141,6 @@ void FixSPHIntegrate::reset_dt()
 }
 
 /* ---------------------------------------------------------------------- */
-
-double FixSPHIntegrate::sound_speed(double rho) const
-{
-  return sqrt(material.E / rho);
-}
 
 void FixSPHIntegrate::forward_comm_state()
 {
@@ -268,19 +191,19 @@ void FixSPHIntegrate::reset_cfl_timestep()
     const double m = rmass ? rmass[i] : mass[type[i]];
     const double a2 = (f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]) / (m * m);
     local[0] = MAX(local[0], a2);
-    local[1] = MAX(local[1], sound_speed(state[i][RHO]));
+    local[1] = MAX(local[1], GRANSPH::sound_speed(material.E, state[i][RHO]));
   }
   double global[2];
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
   if (global[1] == 0.0) return;    // no granular particles anywhere
+  set_timestep(GRANSPH::cfl_timestep(cfl, smoothing_length(), sqrt(global[0]) * force->ftm2v,
+                                     global[1]));
+}
 
-  const double h = smoothing_length();
-  const double amax = sqrt(global[0]) * force->ftm2v;
-  double dt = h / global[1];
-  if (amax > 0.0) dt = MIN(dt, sqrt(h / amax));
-  dt *= cfl;
+// as fix dt/reset does
+void FixSPHIntegrate::set_timestep(double dt)
+{
   if (dt == update->dt) return;
-
   update->update_time();
   update->dt = dt;
   update->dt_default = 0;

@@ -2,9 +2,9 @@
    GRANSPH: shared base of the granular SPH integrators.
 
    Owns the per-atom SPH state (density and Cauchy stress), the rates the pair
-   style writes (density rate, strain rate, spin), and the predictor copies; runs
-   the predictor-corrector of the paper (eqs. 11-18) and the CFL step (eq. 19).
-   A derived class supplies the constitutive model (the stress update).
+   style writes (density rate, strain rate, spin) and the predictor copies, and
+   sets the CFL timestep (eq. 19). FixSPHModel<Model> (fix_sph_model.h) adds the
+   predictor-corrector with a constitutive model.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_SPH_INTEGRATE_H
@@ -13,7 +13,6 @@
 #include "atom.h"
 #include "fix.h"
 #include "gransph_material.h"
-#include "gransph_stress_model.h"
 
 namespace LAMMPS_NS {
 
@@ -32,8 +31,6 @@ class FixSPHIntegrate : public Fix {
   void init() override;
   void setup_pre_force(int) override;
   void setup(int) override;
-  void initial_integrate(int) override;
-  void final_integrate() override;
   void end_of_step() override;
   void reset_dt() override;
 
@@ -57,45 +54,23 @@ class FixSPHIntegrate : public Fix {
   int wallbit;       // group bit of the dummy-wall particles (0: no walls)
   GranSPHMaterial material;
 
-  void forward_comm_state();    // ghosts get fresh rho and sigma
-  double sound_speed(double rho) const;
-  void gravity_vector(double *g) const;    // sum of all fix gravity accelerations
+  virtual void forward_comm_state();    // ghosts get fresh rho and sigma
+  void gravity_vector(double *g) const;  // acceleration of the fix gravity on the grains
 
  protected:
-  // Advance the stress of every granular particle with the current rates: by dt
-  // from the current stress (predictor), or by dt from the stress at the start of
-  // the step with the rate taken at the current, mid-point stress (corrector).
-  enum StressStep { FROM_CURRENT, FROM_START };
-  virtual void update_stress(double dt, StressStep from) = 0;
-
-  // Shared loop for the constitutive models: sigma <- model.update(...)
-  template <class Model> void update_stress_with(const Model &model, double dt, StressStep from)
-  {
-    const int nlocal = atom->nlocal;
-    const int *const mask = atom->mask;
-    for (int i = 0; i < nlocal; ++i) {
-      if (!(mask[i] & groupbit)) continue;
-      const GRANSPH::Sym3 s = GRANSPH::Sym3::load(&state[i][SIGMA]);
-      const GRANSPH::Sym3 s0 = from == FROM_START ? GRANSPH::Sym3::load(&start[i][SIGMA_START]) : s;
-      const GRANSPH::Sym3 d = GRANSPH::Sym3::load(&rates[i][STRAIN]);
-      const GRANSPH::Spin3 w = GRANSPH::Spin3::load(&rates[i][SPIN]);
-      GRANSPH::Regime regime;
-      model.update(s0, s, d, w, state[i][RHO], dt, regime).store(&state[i][SIGMA]);
-      state[i][REGIME] = regime;
-    }
-  }
-
   double rho_init;      // initial density of all particles (material rho0 by default)
   double cfl;           // CFL factor of eq. 19; 0 keeps the LAMMPS timestep
   int geostatic_flag;   // initialise a geostatic stress below surface_height
   double surface_height;
   int restored;         // state came from a restart file
 
- private:
   double smoothing_length() const;
-  void init_geostatic_stress();
   void check_finite() const;
-  void reset_cfl_timestep();
+  virtual void reset_cfl_timestep();
+  void set_timestep(double dt);
+
+ private:
+  void init_geostatic_stress();
 };
 
 }    // namespace LAMMPS_NS

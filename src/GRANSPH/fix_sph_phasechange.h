@@ -12,20 +12,12 @@ FixStyle(sph/phasechange,FixSPHPhaseChange);
 #ifndef LMP_FIX_SPH_PHASECHANGE_H
 #define LMP_FIX_SPH_PHASECHANGE_H
 
-#include "fix_sph_integrate.h"
+#include "fix_sph_model.h"
 #include "gransph_phase_change.h"
 
 namespace LAMMPS_NS {
 
-class FixSPHPhaseChange : public FixSPHIntegrate {
- public:
-  FixSPHPhaseChange(class LAMMPS *, int, char **);
-
-  const GRANSPH::PhaseChange model;
-
- protected:
-  void update_stress(double dt, StressStep from) override;
-};
+using FixSPHPhaseChange = FixSPHModel<GRANSPH::PhaseChange>;
 
 }    // namespace LAMMPS_NS
 

@@ -30,6 +30,12 @@ struct DruckerPrager {
             sin(psi)};
   }
 
+  // from a material record with E, nu, phi, psi, c (host)
+  template <class Material> static DruckerPrager from(const Material &m)
+  {
+    return from_material(m.E, m.nu, m.phi, m.psi, m.c);
+  }
+
   KOKKOS_INLINE_FUNCTION double yield_function(const Sym3 &s) const
   {
     return sqrt(second_invariant(s)) + alpha_phi * s.trace() - k_c;

@@ -32,6 +32,12 @@ struct PhaseChange {
     return {E / (3.0 * (1.0 - 2.0 * nu)), E / (2.0 * (1.0 + nu)), rho_c, xi, mu_s, mu_2};
   }
 
+  // from a material record with E, nu, rho_c, xi, mu_s, mu_2 (host)
+  template <class Material> static PhaseChange from(const Material &m)
+  {
+    return from_material(m.E, m.nu, m.rho_c, m.xi, m.mu_s, m.mu_2);
+  }
+
   // Shear stress after a plastic step: the smaller root of eq. 26 in the
   // cancellation-free form of eq. 27; tau_tr > mu_s p_tr and mu_2 >= mu_s keep
   // the discriminant non-negative, the clamp only absorbs round-off.

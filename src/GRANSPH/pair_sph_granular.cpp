@@ -16,6 +16,7 @@
 #include "error.h"
 #include "fix_sph_integrate.h"
 #include "force.h"
+#include "gransph_integrator.h"
 #include "gransph_neighbour_sums.h"
 #include "memory.h"
 #include "modify.h"
@@ -38,8 +39,7 @@ struct HostParticles {
   int **firstneigh;
   const int *numneigh;
   int granularbit, wallbit;
-  const FixSPHIntegrate *fix;
-  double h, alpha, beta;
+  double E, h, alpha, beta;
   int dim;
 
   int num_neighbours(int i) const { return numneigh[i]; }
@@ -51,7 +51,7 @@ struct HostParticles {
   ParticleView view(int i) const
   {
     const double rho = state[i][FixSPHIntegrate::RHO];
-    return {rmass ? rmass[i] : mass[type[i]], rho, fix->sound_speed(rho),
+    return {rmass ? rmass[i] : mass[type[i]], rho, GRANSPH::sound_speed(E, rho),
             Sym3::load(&state[i][FixSPHIntegrate::SIGMA])};
   }
 };
@@ -91,7 +91,7 @@ void PairSPHGranular::compute(int eflag, int vflag)
 
   const HostParticles particles{x, v, fix.state, atom->rmass, atom->mass, atom->type, mask,
                                 list->firstneigh, list->numneigh, fix.groupbit, fix.wallbit,
-                                &fix, h, alpha, beta, domain->dimension};
+                                fix.material.E, h, alpha, beta, domain->dimension};
   const int inum = list->inum;
   const int *ilist = list->ilist;
 

@@ -68,7 +68,7 @@ CASES = [
     ("a blow-up is caught with the atom ID",    # expansion faster than dt can follow: rho < 0
      dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 walls floor cfl none",
           run="variable vx atom 1000*(x-0.025)\nvariable vy atom 1000*(y-0.025)\n"
-              "variable vz atom 1000*(z-0.025)\nvelocity sand set v_vx v_vy v_vz\n"
+              "variable vz atom 1000*(z-0.025)\nvelocity sand set v_vx v_vy v_vz units box\n"
               "timestep 1e-3\nrun 10"),
      r"atom \d+ has a non-finite state or non-positive density"),
 ]

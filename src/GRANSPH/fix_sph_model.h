@@ -1,0 +1,73 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: the granular SPH integrator with a constitutive model: the
+   predictor-corrector of gransph_integrator.h on the host, per particle of the
+   fix group. Model is one of the value types of gransph_stress_model.h.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_FIX_SPH_MODEL_H
+#define LMP_FIX_SPH_MODEL_H
+
+#include "fix_sph_integrate.h"
+#include "force.h"
+#include "gransph_integrator.h"
+#include "update.h"
+
+namespace LAMMPS_NS {
+
+template <class Model> class FixSPHModel : public FixSPHIntegrate {
+ public:
+  FixSPHModel(class LAMMPS *lmp, int narg, char **arg) :
+      FixSPHIntegrate(lmp, narg, arg), model(Model::from(material))
+  {
+  }
+
+  void initial_integrate(int) override { step(PREDICT); }
+  void final_integrate() override
+  {
+    step(CORRECT);
+    check_finite();
+  }
+
+  const Model model;
+
+ private:
+  enum Stage { PREDICT, CORRECT };
+
+  void step(Stage stage)
+  {
+    double **x = atom->x, **v = atom->v, **f = atom->f;
+    const double *rmass = atom->rmass, *mass = atom->mass;
+    const int *type = atom->type, *mask = atom->mask;
+    const double dt = update->dt;
+    for (int i = 0; i < atom->nlocal; ++i) {
+      if (!(mask[i] & groupbit)) continue;
+      const double ftm = force->ftm2v / (rmass ? rmass[i] : mass[type[i]]);
+      GRANSPH::ParticleState p{{x[i][0], x[i][1], x[i][2]}, {v[i][0], v[i][1], v[i][2]},
+                               state[i][RHO], GRANSPH::Sym3::load(&state[i][SIGMA])};
+      GRANSPH::StepStart s{{start[i][V_START], start[i][V_START + 1], start[i][V_START + 2]},
+                           start[i][RHO_START], GRANSPH::Sym3::load(&start[i][SIGMA_START])};
+      const GRANSPH::StepRates r{{ftm * f[i][0], ftm * f[i][1], ftm * f[i][2]},
+                                 rates[i][DRHO], GRANSPH::Sym3::load(&rates[i][STRAIN]),
+                                 GRANSPH::Spin3::load(&rates[i][SPIN])};
+      GRANSPH::Regime regime;
+      if (stage == PREDICT) {
+        GRANSPH::predict(model, p, s, r, dt, regime);
+        for (int a = 0; a < 3; ++a) start[i][V_START + a] = s.v[a];
+        start[i][RHO_START] = s.rho;
+        s.sigma.store(&start[i][SIGMA_START]);
+      } else
+        GRANSPH::correct(model, p, s, r, dt, regime);
+      for (int a = 0; a < 3; ++a) {
+        x[i][a] = p.x[a];
+        v[i][a] = p.v[a];
+      }
+      state[i][RHO] = p.rho;
+      p.sigma.store(&state[i][SIGMA]);
+      state[i][REGIME] = regime;
+    }
+  }
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

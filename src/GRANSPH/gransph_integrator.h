@@ -1,0 +1,97 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: one particle's predictor-corrector step (paper eqs. 11-17) and the
+   CFL timestep (eq. 19), usable on host and device.
+
+   A LAMMPS step evaluates the pair once, between the predictor
+   (initial_integrate) and the corrector (final_integrate). The paper evaluates
+   the rates twice per step, at t for the predictor and at t+dt/2 for the
+   corrector. Here the predictor uses the rates of the previous step's mid-point
+   evaluation, t-dt/2 (at the first step of a run: the setup evaluation at t).
+   That changes the predicted mid-point state by O(dt^2), so the corrector, which
+   integrates from t with the mid-point rates, stays second order at one rate
+   evaluation per step.
+
+   The stress takes the corrector's full step from t too, with the Jaumann
+   rotation and plastic flow evaluated at the predicted stress. The paper's
+   eq. 18 instead continues from the predicted stress with the mid-point rate,
+   sigma_n + dt/2 (rate_n + rate_{n+1/2}), which saves storing sigma_n but is
+   first order. unittest/physics/test_time_order.py shows the order.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_GRANSPH_INTEGRATOR_H
+#define LMP_GRANSPH_INTEGRATOR_H
+
+#include "gransph_stress_model.h"
+
+namespace GRANSPH {
+
+// What the integrator advances for one granular particle.
+struct ParticleState {
+  double x[3], v[3];
+  double rho;
+  Sym3 sigma;
+};
+
+// The particle at the start of the step, kept for the corrector.
+struct StepStart {
+  double v[3];
+  double rho;
+  Sym3 sigma;
+};
+
+// The latest rates of a particle: acceleration, density rate, strain rate, spin.
+struct StepRates {
+  double acc[3];
+  double drho;
+  Sym3 d;
+  Spin3 w;
+};
+
+// Predictor, eqs. 11-14: half a step with the latest rates.
+template <class Model>
+KOKKOS_INLINE_FUNCTION void predict(const Model &model, ParticleState &p, StepStart &start,
+                                    const StepRates &r, double dt, Regime &regime)
+{
+  const double half = 0.5 * dt;
+  for (int a = 0; a < 3; ++a) {
+    start.v[a] = p.v[a];
+    p.x[a] += half * p.v[a];
+    p.v[a] += half * r.acc[a];
+  }
+  start.rho = p.rho;
+  start.sigma = p.sigma;
+  p.rho += half * r.drho;
+  p.sigma = model.update(p.sigma, p.sigma, r.d, r.w, p.rho, half, regime);
+}
+
+// Corrector, eqs. 15-17 and the full stress step: from t with the mid-point rates.
+template <class Model>
+KOKKOS_INLINE_FUNCTION void correct(const Model &model, ParticleState &p, const StepStart &start,
+                                    const StepRates &r, double dt, Regime &regime)
+{
+  for (int a = 0; a < 3; ++a) {
+    // x_{n+1} = x_n + dt v_{n+1/2}, with x_n = x_{n+1/2} - dt/2 v_n
+    p.x[a] += dt * (p.v[a] - 0.5 * start.v[a]);
+    p.v[a] = start.v[a] + dt * r.acc[a];
+  }
+  p.rho = start.rho + dt * r.drho;
+  p.sigma = model.update(start.sigma, p.sigma, r.d, r.w, p.rho, dt, regime);
+}
+
+// Sound speed of eq. 19, c = sqrt(E / rho) (the paper's choice).
+KOKKOS_INLINE_FUNCTION double sound_speed(double E, double rho)
+{
+  return sqrt(E / rho);
+}
+
+// Eq. 19: dt = C min(sqrt(h / max|a|), h / max c).
+KOKKOS_INLINE_FUNCTION double cfl_timestep(double cfl, double h, double amax, double cmax)
+{
+  double dt = h / cmax;
+  if (amax > 0.0 && sqrt(h / amax) < dt) dt = sqrt(h / amax);
+  return cfl * dt;
+}
+
+}    // namespace GRANSPH
+
+#endif
