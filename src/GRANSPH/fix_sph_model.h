@@ -30,9 +30,10 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
 
   const Model model;
 
- private:
+ protected:
   enum Stage { PREDICT, CORRECT };
 
+ private:
   void step(Stage stage)
   {
     double **x = atom->x, **v = atom->v, **f = atom->f;

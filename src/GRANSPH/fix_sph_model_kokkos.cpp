@@ -1,0 +1,400 @@
+/* ----------------------------------------------------------------------
+   GRANSPH: Kokkos twin of the granular SPH integrators.
+------------------------------------------------------------------------- */
+
+#include "fix_sph_model_kokkos.h"
+
+#include "atom_kokkos.h"
+#include "atom_masks.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "gransph_drucker_prager.h"
+#include "gransph_phase_change.h"
+#include "memory_kokkos.h"
+#include "output.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using FSI = FixSPHIntegrate;
+
+namespace {
+
+// One predictor (PREDICT) or corrector step of every granular particle.
+template <class DeviceType, class Model, bool PREDICT> struct StepFunctor {
+  typedef ArrayTypes<DeviceType> AT;
+  Model model;
+  typename AT::t_x_array x;
+  typename AT::t_v_array v;
+  typename AT::t_f_array_randomread f;
+  typename AT::t_int_1d_randomread mask, type;
+  typename AT::t_float_1d_randomread rmass, mass;
+  typename AT::t_float_2d state, rates, start;
+  int groupbit, use_rmass;
+  double dt, ftm2v;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
+  {
+    using namespace GRANSPH;
+    if (!(mask(i) & groupbit)) return;
+    constexpr int S = FSI::SIGMA, SS = FSI::SIGMA_START, D = FSI::STRAIN, W = FSI::SPIN;
+    const double ftm = ftm2v / (use_rmass ? rmass(i) : mass(type(i)));
+    ParticleState p{{x(i, 0), x(i, 1), x(i, 2)}, {v(i, 0), v(i, 1), v(i, 2)}, state(i, FSI::RHO),
+                    {state(i, S), state(i, S + 1), state(i, S + 2), state(i, S + 3),
+                     state(i, S + 4), state(i, S + 5)}};
+    StepStart s{{start(i, FSI::V_START), start(i, FSI::V_START + 1), start(i, FSI::V_START + 2)},
+                start(i, FSI::RHO_START),
+                {start(i, SS), start(i, SS + 1), start(i, SS + 2), start(i, SS + 3),
+                 start(i, SS + 4), start(i, SS + 5)}};
+    const StepRates r{{ftm * f(i, 0), ftm * f(i, 1), ftm * f(i, 2)},
+                      rates(i, FSI::DRHO),
+                      {rates(i, D), rates(i, D + 1), rates(i, D + 2), rates(i, D + 3),
+                       rates(i, D + 4), rates(i, D + 5)},
+                      {rates(i, W), rates(i, W + 1), rates(i, W + 2)}};
+    Regime regime;
+    if (PREDICT) {
+      predict(model, p, s, r, dt, regime);
+      for (int a = 0; a < 3; ++a) start(i, FSI::V_START + a) = s.v[a];
+      start(i, FSI::RHO_START) = s.rho;
+      s.sigma.store(&start(i, SS));
+    } else
+      correct(model, p, s, r, dt, regime);
+    for (int a = 0; a < 3; ++a) {
+      x(i, a) = p.x[a];
+      v(i, a) = p.v[a];
+    }
+    state(i, FSI::RHO) = p.rho;
+    p.sigma.store(&state(i, S));
+    state(i, FSI::REGIME) = regime;
+  }
+};
+
+}    // namespace
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType, class Model>
+FixSPHModelKokkos<DeviceType, Model>::FixSPHModelKokkos(LAMMPS *lmp, int narg, char **arg) :
+    FixSPHModel<Model>(lmp, narg, arg)
+{
+  this->kokkosable = 1;
+  this->forward_comm_device = 1;
+  this->atomKK = (AtomKokkos *) this->atom;
+  this->execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
+  this->datamask_read = X_MASK | V_MASK | F_MASK | MASK_MASK | RMASS_MASK | TYPE_MASK;
+  this->datamask_modify = X_MASK | V_MASK;
+
+  // the base constructor made plain host arrays: move the state into DualViews
+  this->memory->destroy(this->state);
+  this->memory->destroy(this->rates);
+  this->memory->destroy(this->start);
+  grow_arrays(this->atom->nmax);
+  for (int i = 0; i < this->atom->nlocal; ++i) set_arrays(i);
+}
+
+template <class DeviceType, class Model> FixSPHModelKokkos<DeviceType, Model>::~FixSPHModelKokkos()
+{
+  this->memoryKK->destroy_kokkos(k_state, this->state);
+  this->memoryKK->destroy_kokkos(k_rates, this->rates);
+  this->memoryKK->destroy_kokkos(k_start, this->start);
+}
+
+template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::init()
+{
+  FixSPHModel<Model>::init();
+  // LAMMPS 29Sep2021's fix property/atom/kk keeps rmass on the host only
+  if (this->atom->rmass && this->atomKK->k_rmass.h_view.data() != this->atom->rmass)
+    this->error->all(FLERR, "Fix {}: per-atom masses of fix property/atom are not available "
+                     "to Kokkos styles in this LAMMPS version", this->style);
+  this->atomKK->k_mass.template modify<LMPHostType>();
+  this->atomKK->k_mass.template sync<DeviceType>();
+}
+
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::setup_pre_force(int vflag)
+{
+  this->atomKK->sync(Host, X_MASK | MASK_MASK);
+  sync_host();
+  FixSPHModel<Model>::setup_pre_force(vflag);
+  modified_host();
+}
+
+template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::setup(int)
+{
+  this->atomKK->sync(this->execution_space, this->datamask_read);
+  reset_cfl_timestep();
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::initial_integrate(int)
+{
+  step(FixSPHModel<Model>::PREDICT);
+}
+
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::final_integrate()
+{
+  step(FixSPHModel<Model>::CORRECT);
+  if (count_bad_states()) {
+    // find and name the atom on the host; this only happens once, on failure
+    this->atomKK->sync(Host, X_MASK | V_MASK | MASK_MASK | TAG_MASK);
+    sync_host();
+    this->check_finite();
+  }
+}
+
+template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::step(int stage)
+{
+  AtomKokkos *atomKK = this->atomKK;
+  atomKK->sync(this->execution_space, this->datamask_read);
+  k_state.template sync<DeviceType>();
+  k_rates.template sync<DeviceType>();
+  k_start.template sync<DeviceType>();
+
+  const bool predict = stage == FixSPHModel<Model>::PREDICT;
+  auto run = [&](auto functor) {
+    functor.model = this->model;
+    functor.x = atomKK->k_x.template view<DeviceType>();
+    functor.v = atomKK->k_v.template view<DeviceType>();
+    functor.f = atomKK->k_f.template view<DeviceType>();
+    functor.mask = atomKK->k_mask.template view<DeviceType>();
+    functor.type = atomKK->k_type.template view<DeviceType>();
+    functor.rmass = atomKK->k_rmass.template view<DeviceType>();
+    functor.mass = atomKK->k_mass.template view<DeviceType>();
+    functor.state = k_state.template view<DeviceType>();
+    functor.rates = k_rates.template view<DeviceType>();
+    functor.start = k_start.template view<DeviceType>();
+    functor.groupbit = this->groupbit;
+    functor.use_rmass = this->atom->rmass != nullptr;
+    functor.dt = this->update->dt;
+    functor.ftm2v = this->force->ftm2v;
+    Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal), functor);
+  };
+  if (predict)
+    run(StepFunctor<DeviceType, Model, true>());
+  else
+    run(StepFunctor<DeviceType, Model, false>());
+
+  atomKK->modified(this->execution_space, this->datamask_modify);
+  k_state.template modify<DeviceType>();
+  if (predict) k_start.template modify<DeviceType>();
+}
+
+// non-finite states or non-positive densities among the granular particles, all ranks
+template <class DeviceType, class Model>
+int FixSPHModelKokkos<DeviceType, Model>::count_bad_states()
+{
+  auto x = this->atomKK->k_x.template view<DeviceType>();
+  auto v = this->atomKK->k_v.template view<DeviceType>();
+  auto mask = this->atomKK->k_mask.template view<DeviceType>();
+  auto state = k_state.template view<DeviceType>();
+  const int groupbit = this->groupbit;
+  int bad = 0;
+  Kokkos::parallel_reduce(
+      Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
+      LAMMPS_LAMBDA(const int i, int &count) {
+        if (!(mask(i) & groupbit)) return;
+        double sum = x(i, 0) + x(i, 1) + x(i, 2) + v(i, 0) + v(i, 1) + v(i, 2);
+        for (int k = 0; k < FSI::NCOMM; ++k) sum += state(i, k);
+        // sum - sum is 0 for finite sums only
+        if (!(sum - sum == 0.0) || !(state(i, FSI::RHO) > 0.0)) ++count;
+      },
+      bad);
+  int any = 0;
+  MPI_Allreduce(&bad, &any, 1, MPI_INT, MPI_SUM, this->world);
+  return any;
+}
+
+// eq. 19 with both maxima reduced on the device
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::reset_cfl_timestep()
+{
+  if (this->cfl == 0.0) return;
+  k_state.template sync<DeviceType>();
+  auto f = this->atomKK->k_f.template view<DeviceType>();
+  auto mask = this->atomKK->k_mask.template view<DeviceType>();
+  auto type = this->atomKK->k_type.template view<DeviceType>();
+  auto rmass = this->atomKK->k_rmass.template view<DeviceType>();
+  auto mass = this->atomKK->k_mass.template view<DeviceType>();
+  auto state = k_state.template view<DeviceType>();
+  const int groupbit = this->groupbit;
+  const int use_rmass = this->atom->rmass != nullptr;
+  const double E = this->material.E;
+  double local[2] = {0.0, 0.0};    // max |a|^2, max c
+  Kokkos::parallel_reduce(
+      Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
+      LAMMPS_LAMBDA(const int i, double &amax2) {
+        if (!(mask(i) & groupbit)) return;
+        const double m = use_rmass ? rmass(i) : mass(type(i));
+        const double a2 = (f(i, 0) * f(i, 0) + f(i, 1) * f(i, 1) + f(i, 2) * f(i, 2)) / (m * m);
+        if (a2 > amax2) amax2 = a2;
+      },
+      Kokkos::Max<double>(local[0]));
+  Kokkos::parallel_reduce(
+      Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
+      LAMMPS_LAMBDA(const int i, double &cmax) {
+        if (!(mask(i) & groupbit)) return;
+        const double c = GRANSPH::sound_speed(E, state(i, FSI::RHO));
+        if (c > cmax) cmax = c;
+      },
+      Kokkos::Max<double>(local[1]));
+  double global[2];
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, this->world);
+  if (global[1] == 0.0) return;
+  this->set_timestep(GRANSPH::cfl_timestep(this->cfl, this->smoothing_length(),
+                                           sqrt(global[0]) * this->force->ftm2v, global[1]));
+}
+
+// The per-atom output is read on the host: bring it there on output steps only.
+template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::end_of_step()
+{
+  reset_cfl_timestep();
+  if (this->update->ntimestep == this->output->next) k_state.template sync<LMPHostType>();
+}
+
+template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::post_run()
+{
+  sync_host();
+}
+
+/* ----------------------------------------------------------------------
+   forward communication of rho and sigma: on the device, or through the
+   host buffers when comm/kokkos chooses the classic path
+------------------------------------------------------------------------- */
+
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::forward_comm_state()
+{
+  k_state.template sync<DeviceType>();
+  this->comm->forward_comm_fix(this);
+}
+
+template <class DeviceType, class Model>
+int FixSPHModelKokkos<DeviceType, Model>::pack_forward_comm_fix_kokkos(
+    int n, DAT::tdual_int_2d k_sendlist, int iswap, DAT::tdual_xfloat_1d &k_buf, int, int *)
+{
+  auto sendlist = k_sendlist.view<DeviceType>();
+  auto buf = k_buf.view<DeviceType>();
+  auto state = k_state.template view<DeviceType>();
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<DeviceType>(0, n), LAMMPS_LAMBDA(const int i) {
+        const int j = sendlist(iswap, i);
+        for (int k = 0; k < FSI::NCOMM; ++k) buf(FSI::NCOMM * i + k) = state(j, k);
+      });
+  return n * FSI::NCOMM;
+}
+
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::unpack_forward_comm_fix_kokkos(
+    int n, int first, DAT::tdual_xfloat_1d &k_buf)
+{
+  auto buf = k_buf.view<DeviceType>();
+  auto state = k_state.template view<DeviceType>();
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<DeviceType>(0, n), LAMMPS_LAMBDA(const int i) {
+        for (int k = 0; k < FSI::NCOMM; ++k) state(first + i, k) = buf(FSI::NCOMM * i + k);
+      });
+  k_state.template modify<DeviceType>();
+}
+
+template <class DeviceType, class Model>
+int FixSPHModelKokkos<DeviceType, Model>::pack_forward_comm(int n, int *list, double *buf,
+                                                            int pbc_flag, int *pbc)
+{
+  k_state.template sync<LMPHostType>();
+  return FixSPHModel<Model>::pack_forward_comm(n, list, buf, pbc_flag, pbc);
+}
+
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::unpack_forward_comm(int n, int first, double *buf)
+{
+  k_state.template sync<LMPHostType>();
+  FixSPHModel<Model>::unpack_forward_comm(n, first, buf);
+  k_state.template modify<LMPHostType>();
+}
+
+/* ----------------------------------------------------------------------
+   host callbacks: the base class works on the host copies
+------------------------------------------------------------------------- */
+
+template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::sync_host()
+{
+  k_state.template sync<LMPHostType>();
+  k_rates.template sync<LMPHostType>();
+  k_start.template sync<LMPHostType>();
+}
+
+template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::modified_host()
+{
+  k_state.template modify<LMPHostType>();
+  k_rates.template modify<LMPHostType>();
+  k_start.template modify<LMPHostType>();
+}
+
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::grow_arrays(int nmax)
+{
+  sync_host();    // grow_kokkos reallocates and copies on the host
+  this->memoryKK->grow_kokkos(k_state, this->state, nmax, FSI::NSTATE, "sph:state");
+  this->memoryKK->grow_kokkos(k_rates, this->rates, nmax, FSI::NRATES, "sph:rates");
+  this->memoryKK->grow_kokkos(k_start, this->start, nmax, FSI::NSTART, "sph:start");
+  this->array_atom = this->state;
+}
+
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::copy_arrays(int i, int j, int delflag)
+{
+  sync_host();
+  FixSPHModel<Model>::copy_arrays(i, j, delflag);
+  modified_host();
+}
+
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::set_arrays(int i)
+{
+  sync_host();
+  FixSPHModel<Model>::set_arrays(i);
+  modified_host();
+}
+
+template <class DeviceType, class Model>
+int FixSPHModelKokkos<DeviceType, Model>::pack_exchange(int i, double *buf)
+{
+  sync_host();
+  return FixSPHModel<Model>::pack_exchange(i, buf);
+}
+
+template <class DeviceType, class Model>
+int FixSPHModelKokkos<DeviceType, Model>::unpack_exchange(int nlocal, double *buf)
+{
+  sync_host();
+  const int m = FixSPHModel<Model>::unpack_exchange(nlocal, buf);
+  modified_host();
+  return m;
+}
+
+template <class DeviceType, class Model>
+int FixSPHModelKokkos<DeviceType, Model>::pack_restart(int i, double *buf)
+{
+  k_state.template sync<LMPHostType>();
+  return FixSPHModel<Model>::pack_restart(i, buf);
+}
+
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::unpack_restart(int nlocal, int nth)
+{
+  k_state.template sync<LMPHostType>();
+  FixSPHModel<Model>::unpack_restart(nlocal, nth);
+  k_state.template modify<LMPHostType>();
+}
+
+namespace LAMMPS_NS {
+template class FixSPHModelKokkos<LMPDeviceType, GRANSPH::DruckerPrager>;
+template class FixSPHModelKokkos<LMPDeviceType, GRANSPH::PhaseChange>;
+#ifdef LMP_KOKKOS_GPU
+template class FixSPHModelKokkos<LMPHostType, GRANSPH::DruckerPrager>;
+template class FixSPHModelKokkos<LMPHostType, GRANSPH::PhaseChange>;
+#endif
+}    // namespace LAMMPS_NS

@@ -1,0 +1,61 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: Kokkos twin of FixSPHModel<Model>: the per-atom SPH state lives in
+   DualViews; predictor, corrector, stress update, CFL reduction and forward
+   communication run on the device with the same per-particle functions as the
+   plain styles (gransph_integrator.h). Migration between ranks, restarts and
+   creation of atoms use the host copies (LAMMPS 29Sep2021 exchanges fix data
+   through the classic host path).
+------------------------------------------------------------------------- */
+
+#ifndef LMP_FIX_SPH_MODEL_KOKKOS_H
+#define LMP_FIX_SPH_MODEL_KOKKOS_H
+
+#include "fix_sph_model.h"
+#include "gransph_kokkos.h"
+#include "kokkos_base.h"
+
+namespace LAMMPS_NS {
+
+template <class DeviceType, class Model>
+class FixSPHModelKokkos : public FixSPHModel<Model>, public KokkosBase, public SPHStateKokkos {
+ public:
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+
+  FixSPHModelKokkos(class LAMMPS *, int, char **);
+  ~FixSPHModelKokkos() override;
+  void init() override;
+  void setup_pre_force(int) override;
+  void setup(int) override;
+  void initial_integrate(int) override;
+  void final_integrate() override;
+  void end_of_step() override;
+  void post_run() override;
+  void forward_comm_state() override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_forward_comm_fix_kokkos(int, DAT::tdual_int_2d, int, DAT::tdual_xfloat_1d &, int,
+                                   int *) override;
+  void unpack_forward_comm_fix_kokkos(int, int, DAT::tdual_xfloat_1d &) override;
+
+  // device kernels (public: CUDA lambdas may not live in private members)
+  void step(int stage);
+  int count_bad_states();
+  void reset_cfl_timestep() override;
+
+ private:
+  void sync_host();
+  void modified_host();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

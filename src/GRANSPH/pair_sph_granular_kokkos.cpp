@@ -1,0 +1,177 @@
+/* ----------------------------------------------------------------------
+   GRANSPH: Kokkos twin of pair_style sph/granular.
+------------------------------------------------------------------------- */
+
+#include "pair_sph_granular_kokkos.h"
+
+#include "atom_kokkos.h"
+#include "atom_masks.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_sph_integrate.h"
+#include "force.h"
+#include "gransph_neighbour_sums.h"
+#include "kokkos.h"
+#include "memory_kokkos.h"
+#include "neigh_list_kokkos.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using FSI = FixSPHIntegrate;
+
+template <class DeviceType>
+PairSPHGranularKokkos<DeviceType>::PairSPHGranularKokkos(LAMMPS *lmp) : PairSPHGranular(lmp)
+{
+  kokkosable = 1;
+  atomKK = (AtomKokkos *) atom;
+  execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
+  datamask_read = X_MASK | V_MASK | F_MASK | TYPE_MASK | MASK_MASK | RMASS_MASK;
+  datamask_modify = F_MASK;
+}
+
+template <class DeviceType> PairSPHGranularKokkos<DeviceType>::~PairSPHGranularKokkos()
+{
+  memoryKK->destroy_kokkos(k_vatom, vatom);
+}
+
+template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::init_style()
+{
+  PairSPHGranular::init_style();
+  if (!dynamic_cast<SPHStateKokkos *>(integrator))
+    error->all(FLERR, "Pair style sph/granular/kk needs the /kk variant of the GRANSPH integrator");
+  auto request = neighbor->requests[neighbor->nrequest - 1];
+  request->kokkos_host =
+      std::is_same<DeviceType, LMPHostType>::value && !std::is_same<DeviceType, LMPDeviceType>::value;
+  request->kokkos_device = std::is_same<DeviceType, LMPDeviceType>::value;
+  atomKK->k_mass.template modify<LMPHostType>();
+  atomKK->k_mass.template sync<DeviceType>();
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag, 0);
+  if (vflag_atom) {
+    memoryKK->destroy_kokkos(k_vatom, vatom);
+    memoryKK->create_kokkos(k_vatom, vatom, maxvatom, "pair:vatom");
+  }
+  atomKK->sync(execution_space, datamask_read);
+
+  FixSPHIntegrate &fix = *integrator;
+  auto &kk = dynamic_cast<SPHStateKokkos &>(fix);
+  auto k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
+
+  fix.forward_comm_state();
+  kk.k_state.template sync<DeviceType>();
+  kk.k_rates.template sync<DeviceType>();
+  kk.k_start.template sync<DeviceType>();
+
+  DeviceParticles<DeviceType> p;
+  p.pos = atomKK->k_x.template view<DeviceType>();
+  p.vel = atomKK->k_v.template view<DeviceType>();
+  p.mask = atomKK->k_mask.template view<DeviceType>();
+  p.type = atomKK->k_type.template view<DeviceType>();
+  p.rmass = atomKK->k_rmass.template view<DeviceType>();
+  p.mass = atomKK->k_mass.template view<DeviceType>();
+  p.state = kk.k_state.template view<DeviceType>();
+  p.neighbors = k_list->d_neighbors;
+  p.numneigh = k_list->d_numneigh;
+  p.granularbit = fix.groupbit;
+  p.wallbit = fix.wallbit;
+  p.use_rmass = atom->rmass != nullptr;
+  p.dim = domain->dimension;
+  p.E = fix.material.E;
+  p.h = h;
+  p.alpha = alpha;
+  p.beta = beta;
+
+  if (fix.wallbit) {
+    wall_stresses(p, kk);
+    kk.k_state.template modify<DeviceType>();
+    kk.k_start.template modify<DeviceType>();
+    fix.forward_comm_state();
+  }
+  rates_and_forces(p, kk);
+  kk.k_rates.template modify<DeviceType>();
+  atomKK->modified(execution_space, datamask_modify);
+  if (vflag_atom) {
+    k_vatom.template modify<DeviceType>();
+    k_vatom.template sync<LMPHostType>();
+  }
+}
+
+// dummy-particle stresses, eq. 8, with the wall acceleration from the velocity
+// change since the last evaluation
+template <class DeviceType>
+void PairSPHGranularKokkos<DeviceType>::wall_stresses(const DeviceParticles<DeviceType> &p,
+                                                      SPHStateKokkos &kk)
+{
+  auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
+  auto start = kk.k_start.template view<DeviceType>();
+  double g[3];
+  integrator->gravity_vector(g);
+  const double gx = g[0], gy = g[1], gz = g[2];
+  const double inv_dt = update->setupflag ? 0.0 : 1.0 / update->dt;
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<DeviceType>(0, list->inum), LAMMPS_LAMBDA(const int ii) {
+        const int d = ilist(ii);
+        if (!p.wall(d)) return;
+        const double gd[3] = {gx, gy, gz};
+        double g_minus_a[3];
+        for (int a = 0; a < 3; ++a) {
+          g_minus_a[a] = gd[a] - (p.v(d, a) - start(d, FSI::WALL_V + a)) * inv_dt;
+          start(d, FSI::WALL_V + a) = p.v(d, a);
+        }
+        GRANSPH::wall_stress(p, d, g_minus_a).store(&p.state(d, FSI::SIGMA));
+      });
+}
+
+// rates of the granular particles (eqs. 6, 7, 34, 35) and forces on the walls (eq. 9)
+template <class DeviceType>
+void PairSPHGranularKokkos<DeviceType>::rates_and_forces(const DeviceParticles<DeviceType> &p,
+                                                         SPHStateKokkos &kk)
+{
+  auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
+  auto rates = kk.k_rates.template view<DeviceType>();
+  auto f = atomKK->k_f.template view<DeviceType>();
+  auto vatom = k_vatom.template view<DeviceType>();
+  const int want_virial = vflag_either, want_vatom = vflag_atom;
+  const double ftm2v = force->ftm2v;
+  EV_FLOAT ev;
+  Kokkos::parallel_reduce(
+      Kokkos::RangePolicy<DeviceType>(0, list->inum),
+      LAMMPS_LAMBDA(const int ii, EV_FLOAT &sum) {
+        const int i = ilist(ii);
+        double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        double *virp = want_virial ? vir : nullptr;
+        if (p.granular(i)) {
+          const GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, virp);
+          const double m = p.mass_of(i);
+          for (int a = 0; a < 3; ++a) f(i, a) += m * r.acc[a] / ftm2v;
+          rates(i, FSI::DRHO) = r.drho;
+          r.strain.store(&rates(i, FSI::STRAIN));
+          r.spin.store(&rates(i, FSI::SPIN));
+        } else if (p.wall(i)) {
+          double fd[3];
+          GRANSPH::wall_force(p, i, fd, virp);
+          for (int a = 0; a < 3; ++a) f(i, a) += fd[a] / ftm2v;
+        } else
+          return;
+        for (int k = 0; k < 6; ++k) sum.v[k] += vir[k];
+        if (want_vatom)
+          for (int k = 0; k < 6; ++k) vatom(i, k) += vir[k];
+      },
+      ev);
+  if (vflag_global)
+    for (int k = 0; k < 6; ++k) virial[k] += ev.v[k];
+}
+
+namespace LAMMPS_NS {
+template class PairSPHGranularKokkos<LMPDeviceType>;
+#ifdef LMP_KOKKOS_GPU
+template class PairSPHGranularKokkos<LMPHostType>;
+#endif
+}    // namespace LAMMPS_NS

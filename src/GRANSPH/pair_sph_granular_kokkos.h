@@ -1,0 +1,45 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: Kokkos twin of pair_style sph/granular. Same neighbour sums
+   (gransph_neighbour_sums.h) over a full Kokkos neighbour list, one particle
+   per thread writing only to itself: no atomics.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(sph/granular/kk,PairSPHGranularKokkos<LMPDeviceType>);
+PairStyle(sph/granular/kk/device,PairSPHGranularKokkos<LMPDeviceType>);
+PairStyle(sph/granular/kk/host,PairSPHGranularKokkos<LMPHostType>);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_SPH_GRANULAR_KOKKOS_H
+#define LMP_PAIR_SPH_GRANULAR_KOKKOS_H
+
+#include "gransph_kokkos.h"
+#include "kokkos_type.h"
+#include "pair_sph_granular.h"
+
+namespace LAMMPS_NS {
+
+template <class DeviceType> class PairSPHGranularKokkos : public PairSPHGranular {
+ public:
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+
+  PairSPHGranularKokkos(class LAMMPS *);
+  ~PairSPHGranularKokkos() override;
+  void compute(int, int) override;
+  void init_style() override;
+
+  // device kernels (public: CUDA lambdas may not live in private members)
+  void wall_stresses(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
+  void rates_and_forces(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
+
+ private:
+  DAT::tdual_virial_array k_vatom;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

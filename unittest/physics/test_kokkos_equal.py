@@ -1,0 +1,40 @@
+"""The /kk styles on 2 OpenMP threads reproduce the plain styles to round-off:
+positions, velocities, density and stress after a few hundred steps of the
+column collapse (elastoplastic, dummy walls) and the jet collision (phase change)."""
+
+import os
+import sys
+import tempfile
+
+import numpy as np
+
+import gransph_run
+
+EXAMPLES = os.path.join(gransph_run.TOP, "examples")
+CASES = [
+    ("column_collapse", {"steps": 300}),
+    ("jet_collision", {"steps": 300, "dx": 0.016}),
+]
+KOKKOS = ["-k", "on", "t", "2", "-sf", "kk"]
+
+failed = passed = 0
+with tempfile.TemporaryDirectory() as tmp:
+    for case, variables in CASES:
+        example = os.path.join(EXAMPLES, case, f"in.{case}")
+        states = []
+        for args in ([], KOKKOS):
+            out = gransph_run.run(example, {**variables, "dump": 1}, args=args, cwd=tmp)
+            assert not args or "sph/granular/kk" in out, "the Kokkos pair style was not used"
+            states.append(gransph_run.read_dump(os.path.join(tmp, f"{case}.dump")))
+        plain, kk = states
+        assert np.array_equal(plain["id"], kk["id"])
+        assert np.max(np.abs(plain["vx"])) > 1e-3, "nothing moved: nothing was compared"
+        for name in plain:
+            scale = max(np.max(np.abs(plain[name])), 1e-30)
+            diff = np.max(np.abs(plain[name] - kk[name])) / scale
+            ok = diff < 1e-10
+            passed += ok
+            failed += not ok
+            print(f"{case:16s} {name:9s} max |plain - kk| / max |plain| = {diff:.2e} {'ok' if ok else 'FAILED'}")
+print(f"{passed} passed, {failed} failed")
+sys.exit(1 if failed else 0)
