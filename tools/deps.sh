@@ -4,6 +4,7 @@
 # Everything lands outside the git tree, in $GRANSPH_DEPS (default ~/.cache/gransph):
 #   src/     pinned Debian source packages (sha256-checked)
 #   kokkos/  Kokkos 3.4.01 (from trilinos' packages/kokkos), OpenMP+Serial, installed
+#   kokkos-cuda/  the same Kokkos for CUDA sm_80 (if nvcc exists), for a compile-only check
 #   lammps/  LAMMPS 29Sep2021 update 2 source tree and its build tree (lammps/build)
 # A second run with everything in place only re-checks and returns in seconds.
 set -euo pipefail
@@ -80,6 +81,38 @@ build_kokkos() {
   touch "$stamp"
 }
 
+# A second Kokkos 3.4.01 for CUDA (sm_80), only for the compile check in
+# unittest/cuda: there is no GPU here, but nvcc proves our device code compiles.
+# 3.4.01 predates CUDA 13, hence tools/patches/kokkos-3.4.01-cuda13.patch.
+build_kokkos_cuda() {
+  local nvcc; nvcc=$(PATH=$PATH:/usr/local/cuda/bin command -v nvcc) ||
+    { log "nvcc not found (PATH, /usr/local/cuda/bin): skipping CUDA Kokkos and its compile check"; return 0; }
+  local patch; patch=$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/patches/kokkos-3.4.01-cuda13.patch
+  local prefix=$GRANSPH_DEPS/kokkos-cuda
+  local stamp; stamp=$prefix/.built-$TRILINOS_DEB-$(sha256sum < "$patch" | cut -c1-16)
+  [ -f "$stamp" ] && return
+  log "building Kokkos 3.4.01 (CUDA sm_80 + Serial, $nvcc; ~1 min)"
+  local work=$GRANSPH_DEPS/kokkos-cuda-src start=$SECONDS
+  rm -rf "$work" "$prefix" && mkdir -p "$work"
+  tar -xzf "$GRANSPH_DEPS/src/$TRILINOS_ORIG" -C "$work" --strip-components=2 \
+      --wildcards '*/packages/kokkos/*'
+  patch -d "$work/kokkos" -p1 --quiet < "$patch"
+  # nvcc_wrapper runs the first nvcc in PATH; static libs: nothing links them here
+  PATH=$(dirname "$nvcc"):$PATH cmake -S "$work/kokkos" -B "$work/build" -G Ninja \
+      -D CMAKE_BUILD_TYPE=Release -D CMAKE_CXX_COMPILER="$work/kokkos/bin/nvcc_wrapper" \
+      -D CMAKE_CXX_COMPILER_LAUNCHER=ccache -D CMAKE_INSTALL_PREFIX="$prefix" \
+      -D CMAKE_CXX_STANDARD=14 -D Kokkos_ENABLE_CUDA=ON -D Kokkos_ENABLE_SERIAL=ON \
+      -D Kokkos_ARCH_AMPERE80=ON -D Kokkos_ENABLE_CUDA_LAMBDA=ON >/dev/null
+  PATH=$(dirname "$nvcc"):$PATH cmake --build "$work/build" -j "$JOBS" >/dev/null
+  cmake --install "$work/build" >/dev/null
+  # the patched wrapper defaults to sm_80; CUDA 13 rejects the stock sm_35
+  grep -q '^default_arch="sm_80"' "$prefix/bin/nvcc_wrapper" ||
+    { echo "[deps] $prefix/bin/nvcc_wrapper does not default to sm_80" >&2; exit 1; }
+  rm -rf "$work"
+  touch "$stamp"
+  log "CUDA Kokkos built in $((SECONDS - start)) s"
+}
+
 # The LAMMPS packages GRANSPH needs: KOKKOS (the /kk styles), PLUGIN (loads us),
 # SPH (the sph/taitwater peer in bench/), GRANULAR (for comparisons), MOLECULE
 # (LAMMPS' test_fix_timestep harness skips every test without it).
@@ -114,5 +147,6 @@ install_apt_packages
 fetch_source lammps "$LAMMPS_DEB" "$LAMMPS_ORIG" "$LAMMPS_SHA256"
 fetch_source trilinos "$TRILINOS_DEB" "$TRILINOS_ORIG" "$TRILINOS_SHA256"
 build_kokkos
+build_kokkos_cuda
 build_lammps
 log "ready: LAMMPS in $GRANSPH_DEPS/lammps/build, Kokkos in $GRANSPH_DEPS/kokkos"
