@@ -30,32 +30,50 @@ KOKKOS_INLINE_FUNCTION void add_pair_virial(double *vir, const double *dx, const
   vir[5] += 0.5 * dx[1] * fij[2];
 }
 
+// What a pair i-j inside the kernel support shares with every term:
+// dx = x_i - x_j, dv = v_i - v_j, grad_i W_ij and the viscosity Pi_ij (eq. 7).
+struct PairGeometry {
+  double dx[3], dv[3], gradw[3];
+  double visc;
+};
+
+// Fills g for neighbour j of i; false if j is outside the support (or on top of i).
+template <class Particles>
+KOKKOS_INLINE_FUNCTION bool pair_geometry(const Particles &p, int i, int j, const ParticleView &pi,
+                                          const ParticleView &pj, PairGeometry &g)
+{
+  for (int a = 0; a < 3; ++a) g.dx[a] = p.x(i, a) - p.x(j, a);
+  const double rsq = g.dx[0] * g.dx[0] + g.dx[1] * g.dx[1] + g.dx[2] * g.dx[2];
+  if (rsq >= 4.0 * p.h * p.h || rsq == 0.0) return false;
+  const double fw = WendlandC2::grad_factor(rsq, p.h, p.dim);
+  for (int a = 0; a < 3; ++a) {
+    g.dv[a] = p.v(i, a) - p.v(j, a);
+    g.gradw[a] = fw * g.dx[a];
+  }
+  g.visc = monaghan_viscosity(g.dx, g.dv, rsq, p.h, p.alpha, p.beta, pi, pj);
+  return true;
+}
+
 // Rates of granular particle i (eqs. 6, 7, 34, 35); vir (may be null) gets its virial.
 template <class Particles>
 KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir)
 {
   ParticleRates r = ParticleRates::zero();
   const ParticleView pi = p.view(i);
-  const double cutsq = 4.0 * p.h * p.h;
   const int n = p.num_neighbours(i);
   for (int k = 0; k < n; ++k) {
     const int j = p.neighbour(i, k);
     if (!p.granular(j) && !p.wall(j)) continue;
-    const double dx[3] = {p.x(i, 0) - p.x(j, 0), p.x(i, 1) - p.x(j, 1), p.x(i, 2) - p.x(j, 2)};
-    const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
-    if (rsq >= cutsq || rsq == 0.0) continue;
-    const double dv[3] = {p.v(i, 0) - p.v(j, 0), p.v(i, 1) - p.v(j, 1), p.v(i, 2) - p.v(j, 2)};
-    const double fw = WendlandC2::grad_factor(rsq, p.h, p.dim);
-    const double gradw[3] = {fw * dx[0], fw * dx[1], fw * dx[2]};
     const ParticleView pj = p.view(j);
-    const double visc = monaghan_viscosity(dx, dv, rsq, p.h, p.alpha, p.beta, pi, pj);
+    PairGeometry g;
+    if (!pair_geometry(p, i, j, pi, pj, g)) continue;
     if (vir) {
       double acc[3] = {0.0, 0.0, 0.0};
-      momentum_term(pi, pj, visc, gradw, acc);
+      momentum_term(pi, pj, g.visc, g.gradw, acc);
       const double fij[3] = {pi.mass * acc[0], pi.mass * acc[1], pi.mass * acc[2]};
-      add_pair_virial(vir, dx, fij);
+      add_pair_virial(vir, g.dx, fij);
     }
-    add_neighbour(r, pi, pj, dv, gradw, visc);
+    add_neighbour(r, pi, pj, g.dv, g.gradw, g.visc);
   }
   return r;
 }
@@ -84,26 +102,20 @@ template <class Particles>
 KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force, double *vir)
 {
   const ParticleView pd = p.view(d);
-  const double cutsq = 4.0 * p.h * p.h;
   double acc[3] = {0.0, 0.0, 0.0};
   const int n = p.num_neighbours(d);
   for (int k = 0; k < n; ++k) {
     const int j = p.neighbour(d, k);
     if (!p.granular(j)) continue;
-    const double dx[3] = {p.x(d, 0) - p.x(j, 0), p.x(d, 1) - p.x(j, 1), p.x(d, 2) - p.x(j, 2)};
-    const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
-    if (rsq >= cutsq || rsq == 0.0) continue;
-    const double dv[3] = {p.v(d, 0) - p.v(j, 0), p.v(d, 1) - p.v(j, 1), p.v(d, 2) - p.v(j, 2)};
-    const double fw = WendlandC2::grad_factor(rsq, p.h, p.dim);
-    const double gradw[3] = {fw * dx[0], fw * dx[1], fw * dx[2]};
     const ParticleView pj = p.view(j);
-    const double visc = monaghan_viscosity(dx, dv, rsq, p.h, p.alpha, p.beta, pd, pj);
+    PairGeometry g;
+    if (!pair_geometry(p, d, j, pd, pj, g)) continue;
     double accj[3] = {0.0, 0.0, 0.0};
-    momentum_term(pd, pj, visc, gradw, accj);
+    momentum_term(pd, pj, g.visc, g.gradw, accj);
     for (int a = 0; a < 3; ++a) acc[a] += accj[a];
     if (vir) {
       const double fij[3] = {pd.mass * accj[0], pd.mass * accj[1], pd.mass * accj[2]};
-      add_pair_virial(vir, dx, fij);
+      add_pair_virial(vir, g.dx, fij);
     }
   }
   for (int a = 0; a < 3; ++a) force[a] = pd.mass * acc[a];
