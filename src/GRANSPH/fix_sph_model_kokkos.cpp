@@ -102,6 +102,8 @@ template <class DeviceType, class Model> FixSPHModelKokkos<DeviceType, Model>::~
 template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::init()
 {
   FixSPHModel<Model>::init();
+  if (!this->force->pair->kokkosable)
+    this->error->all(FLERR, "Fix {} needs pair_style sph/granular/kk", this->style);
   // LAMMPS 29Sep2021's fix property/atom/kk keeps rmass on the host only
   if (this->atom->rmass && this->atomKK->k_rmass.h_view.data() != this->atom->rmass)
     this->error->all(FLERR, "Fix {}: per-atom masses of fix property/atom are not available "

@@ -4,7 +4,7 @@
    stress mu_s p, mu(I)-rheology plastic flow above it, stress-free
    ("disconnected") below the critical density rho_c or under tension.
 
-   The rate term. Chen et al. print alpha = xi G dt p_tr, which has units Pa^2.
+   The rate term. Chen et al. print alpha = xi G dt p_tr, which has units Pa^(3/2).
    With mu(I) = mu_s + (mu_2 - mu_s) I / (I0 + I), I = gamma_dot d sqrt(rho_s / p)
    and the plastic shear rate gamma_dot = (tau_tr - tau) / (G dt) of the
    elastic predictor, tau = mu(I) p gives exactly tau^2 - B tau + H = 0 (eq. 26)
