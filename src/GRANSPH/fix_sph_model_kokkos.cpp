@@ -13,6 +13,7 @@
 #include "gransph_phase_change.h"
 #include "memory_kokkos.h"
 #include "output.h"
+#include "pair.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
