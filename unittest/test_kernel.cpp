@@ -91,7 +91,7 @@ struct Lattice {
   ParticleRates rates(const double L[3][3]) const
   {
     ParticleRates r = ParticleRates::zero();
-    const ParticleView p{mass(), rho, 100.0, Sym3::zero()};
+    const ParticleView p{mass(), rho, Sym3::zero()};
     for_neighbours([&](const double *xj) {
       const double dx_ij[3] = {-xj[0], -xj[1], -xj[2]};
       const double rsq = xj[0] * xj[0] + xj[1] * xj[1] + xj[2] * xj[2];
@@ -163,19 +163,19 @@ TEST(PairTerms, UniformCompressionRaisesDensity)
 
 TEST(PairTerms, ViscosityOnlyBetweenApproachingParticles)
 {
-  const ParticleView p{1.0, 1000.0, 50.0, Sym3::zero()};
+  const ParticleView p{1.0, 1000.0, Sym3::zero()};
   const double dx[3] = {0.01, 0.0, 0.0};
   const double approach[3] = {-1.0, 0.0, 0.0};
   const double separate[3] = {1.0, 0.0, 0.0};
-  EXPECT_GT(monaghan_viscosity(dx, approach, 1e-4, 0.012, 1.0, 1.0, p, p), 0.0);
-  EXPECT_EQ(monaghan_viscosity(dx, separate, 1e-4, 0.012, 1.0, 1.0, p, p), 0.0);
+  EXPECT_GT(monaghan_viscosity(dx, approach, 1e-4, 0.012, 1.0, 1.0, 20e6, p, p), 0.0);
+  EXPECT_EQ(monaghan_viscosity(dx, separate, 1e-4, 0.012, 1.0, 1.0, 20e6, p, p), 0.0);
 }
 
 TEST(PairTerms, PressureAndViscosityRepelAndConserveMomentum)
 {
   // two particles under pressure p: i is pushed away from j, and f_ij = -f_ji
-  const ParticleView pi{0.5, 1000.0, 50.0, Sym3::iso(-2.0e4)};
-  const ParticleView pj{0.7, 1100.0, 50.0, Sym3::iso(-1.0e4)};
+  const ParticleView pi{0.5, 1000.0, Sym3::iso(-2.0e4)};
+  const ParticleView pj{0.7, 1100.0, Sym3::iso(-1.0e4)};
   const double h = 0.012;
   const double xij[3] = {0.01, 0.002, -0.003};
   const double vij[3] = {-0.4, 0.1, 0.0};
@@ -183,7 +183,7 @@ TEST(PairTerms, PressureAndViscosityRepelAndConserveMomentum)
   const double fw = WendlandC2::grad_factor(rsq, h, 3);
   const double gi[3] = {fw * xij[0], fw * xij[1], fw * xij[2]};
   const double gj[3] = {-gi[0], -gi[1], -gi[2]};
-  const double visc = monaghan_viscosity(xij, vij, rsq, h, 1.0, 1.0, pi, pj);
+  const double visc = monaghan_viscosity(xij, vij, rsq, h, 1.0, 1.0, 20e6, pi, pj);
   double ai[3] = {0.0, 0.0, 0.0}, aj[3] = {0.0, 0.0, 0.0};
   momentum_term(pi, pj, visc, gi, ai);
   momentum_term(pj, pi, visc, gj, aj);

@@ -21,6 +21,7 @@
 #ifndef LMP_GRANSPH_INTEGRATOR_H
 #define LMP_GRANSPH_INTEGRATOR_H
 
+#include "gransph_pair_terms.h"
 #include "gransph_stress_model.h"
 
 namespace GRANSPH {
@@ -76,12 +77,6 @@ KOKKOS_INLINE_FUNCTION void correct(const Model &model, ParticleState &p, const 
   }
   p.rho = start.rho + dt * r.drho;
   p.sigma = model.update(start.sigma, p.sigma, r.d, r.w, p.rho, dt, regime);
-}
-
-// Sound speed of eq. 19, c = sqrt(E / rho) (the paper's choice).
-KOKKOS_INLINE_FUNCTION double sound_speed(double E, double rho)
-{
-  return sqrt(E / rho);
 }
 
 // Eq. 19: dt = C min(sqrt(h / max|a|), h / max c).

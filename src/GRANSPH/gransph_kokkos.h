@@ -45,7 +45,7 @@ template <class DeviceType> struct DeviceParticles {
   {
     constexpr int S = FixSPHIntegrate::SIGMA;
     const double rho = state(i, FixSPHIntegrate::RHO);
-    return {mass_of(i), rho, GRANSPH::sound_speed(E, rho),
+    return {mass_of(i), rho,
             {state(i, S), state(i, S + 1), state(i, S + 2), state(i, S + 3), state(i, S + 4),
              state(i, S + 5)}};
   }

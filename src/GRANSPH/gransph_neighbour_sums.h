@@ -6,7 +6,7 @@
      double x(int i, int a), v(int i, int a)
      bool   granular(int i), wall(int i)
      GRANSPH::ParticleView view(int i)
-     double h, alpha, beta; int dim
+     double E, h, alpha, beta; int dim    (E: Young's modulus, for the sound speed)
 
    All loops run over one particle i and write only to i (full neighbour list).
 ------------------------------------------------------------------------- */
@@ -50,7 +50,7 @@ KOKKOS_INLINE_FUNCTION bool pair_geometry(const Particles &p, int i, int j, cons
     g.dv[a] = p.v(i, a) - p.v(j, a);
     g.gradw[a] = fw * g.dx[a];
   }
-  g.visc = monaghan_viscosity(g.dx, g.dv, rsq, p.h, p.alpha, p.beta, pi, pj);
+  g.visc = monaghan_viscosity(g.dx, g.dv, rsq, p.h, p.alpha, p.beta, p.E, pi, pj);
   return true;
 }
 

@@ -14,20 +14,27 @@ namespace GRANSPH {
 
 // What a particle brings to a pair interaction.
 struct ParticleView {
-  double mass, rho, c;    // c: sound speed sqrt(E/rho), eq. 19
+  double mass, rho;
   Sym3 sigma;
 };
 
+// Sound speed of the paper, c = sqrt(E / rho) (eq. 19; LOQUAT uses sqrt(K / rho)).
+KOKKOS_INLINE_FUNCTION double sound_speed(double E, double rho)
+{
+  return sqrt(E / rho);
+}
+
 // Monaghan artificial viscosity Pi_ij, eq. 7, with phi = 0.1 h in the denominator.
-// dx = x_i - x_j, dv = v_i - v_j. Acts only between approaching particles.
+// dx = x_i - x_j, dv = v_i - v_j. Acts only between approaching particles, so the
+// sound speeds are only computed for those.
 KOKKOS_INLINE_FUNCTION double monaghan_viscosity(const double *dx, const double *dv, double rsq,
-                                                 double h, double alpha, double beta,
+                                                 double h, double alpha, double beta, double E,
                                                  const ParticleView &pi, const ParticleView &pj)
 {
   const double vdotx = dv[0] * dx[0] + dv[1] * dx[1] + dv[2] * dx[2];
   if (vdotx >= 0.0) return 0.0;
   const double phi = h * vdotx / (rsq + 0.01 * h * h);
-  const double c_ij = 0.5 * (pi.c + pj.c);
+  const double c_ij = 0.5 * (sound_speed(E, pi.rho) + sound_speed(E, pj.rho));
   const double rho_ij = 0.5 * (pi.rho + pj.rho);
   return (-alpha * c_ij * phi + beta * phi * phi) / rho_ij;
 }

@@ -51,7 +51,7 @@ struct HostParticles {
   ParticleView view(int i) const
   {
     const double rho = state[i][FixSPHIntegrate::RHO];
-    return {rmass ? rmass[i] : mass[type[i]], rho, GRANSPH::sound_speed(E, rho),
+    return {rmass ? rmass[i] : mass[type[i]], rho,
             Sym3::load(&state[i][FixSPHIntegrate::SIGMA])};
   }
 };
