@@ -269,6 +269,7 @@ void FixSPHIntegrate::grow_arrays(int nmax)
 
 void FixSPHIntegrate::copy_arrays(int i, int j, int /*delflag*/)
 {
+  if (i == j) return;    // LAMMPS copies the last atom onto itself when deleting it
   memcpy(state[j], state[i], NSTATE * sizeof(double));
   memcpy(rates[j], rates[i], NRATES * sizeof(double));
   memcpy(start[j], start[i], NSTART * sizeof(double));

@@ -6,9 +6,16 @@
 #include "lammpsplugin.h"
 #include "version.h"
 
+#include "compute_sph_wallforce.h"
 #include "fix_sph_elastoplastic.h"
+#include "fix_sph_inflow.h"
+#include "fix_sph_outflow.h"
 #include "fix_sph_phasechange.h"
 #include "pair_sph_granular.h"
+
+#include "compute_sph_wallforce_kokkos.h"
+#include "fix_sph_model_kokkos.h"
+#include "pair_sph_granular_kokkos.h"
 
 using namespace LAMMPS_NS;
 
@@ -20,6 +27,11 @@ template <class T> Pair *pair_creator(LAMMPS *lmp)
 }
 
 template <class T> Fix *fix_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new T(lmp, argc, argv);
+}
+
+template <class T> Compute *compute_creator(LAMMPS *lmp, int argc, char **argv)
 {
   return new T(lmp, argc, argv);
 }
@@ -42,6 +54,21 @@ void register_style(lammpsplugin_regfunc register_plugin, void *lmp, void *handl
   (*register_plugin)(&plugin, lmp);
 }
 
+// the Kokkos twins of a style: name/kk and name/kk/device run on the Kokkos
+// device, name/kk/host on the host execution space
+struct KokkosNames {
+  const char *kk, *device, *host;
+};
+
+void register_kokkos_style(lammpsplugin_regfunc reg, void *lmp, void *handle, const char *style,
+                           const KokkosNames &names, const char *info, void *device_creator,
+                           void *host_creator, bool is_v2)
+{
+  register_style(reg, lmp, handle, style, names.kk, info, device_creator, is_v2);
+  register_style(reg, lmp, handle, style, names.device, info, device_creator, is_v2);
+  register_style(reg, lmp, handle, style, names.host, info, host_creator, is_v2);
+}
+
 }    // namespace
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
@@ -56,4 +83,37 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   register_style(reg, lmp, handle, "fix", "sph/phasechange",
                  "GRANSPH integrator, Dunatunga-Kamrin phase-change model",
                  (void *) &fix_creator<FixSPHPhaseChange>, true);
+  register_style(reg, lmp, handle, "fix", "sph/inflow",
+                 "GRANSPH: granular nozzle inserting layers of particles",
+                 (void *) &fix_creator<FixSPHInflow>, true);
+  register_style(reg, lmp, handle, "fix", "sph/outflow",
+                 "GRANSPH: delete particles that leave a region",
+                 (void *) &fix_creator<FixSPHOutflow>, true);
+  register_style(reg, lmp, handle, "compute", "sph/wallforce",
+                 "GRANSPH: force of the grains on a wall of dummy particles",
+                 (void *) &compute_creator<ComputeSPHWallForce>, true);
+
+  register_kokkos_style(reg, lmp, handle, "pair",
+                        {"sph/granular/kk", "sph/granular/kk/device", "sph/granular/kk/host"},
+                        "GRANSPH granular SPH pair style, Kokkos",
+                        (void *) &pair_creator<PairSPHGranularKokkos<LMPDeviceType>>,
+                        (void *) &pair_creator<PairSPHGranularKokkos<LMPHostType>>, false);
+  register_kokkos_style(
+      reg, lmp, handle, "fix",
+      {"sph/elastoplastic/kk", "sph/elastoplastic/kk/device", "sph/elastoplastic/kk/host"},
+      "GRANSPH integrator, Drucker-Prager elastoplastic model, Kokkos",
+      (void *) &fix_creator<FixSPHModelKokkos<LMPDeviceType, GRANSPH::DruckerPrager>>,
+      (void *) &fix_creator<FixSPHModelKokkos<LMPHostType, GRANSPH::DruckerPrager>>, true);
+  register_kokkos_style(
+      reg, lmp, handle, "fix",
+      {"sph/phasechange/kk", "sph/phasechange/kk/device", "sph/phasechange/kk/host"},
+      "GRANSPH integrator, Dunatunga-Kamrin phase-change model, Kokkos",
+      (void *) &fix_creator<FixSPHModelKokkos<LMPDeviceType, GRANSPH::PhaseChange>>,
+      (void *) &fix_creator<FixSPHModelKokkos<LMPHostType, GRANSPH::PhaseChange>>, true);
+  register_kokkos_style(
+      reg, lmp, handle, "compute",
+      {"sph/wallforce/kk", "sph/wallforce/kk/device", "sph/wallforce/kk/host"},
+      "GRANSPH: force of the grains on a wall of dummy particles, Kokkos",
+      (void *) &compute_creator<ComputeSPHWallForceKokkos<LMPDeviceType>>,
+      (void *) &compute_creator<ComputeSPHWallForceKokkos<LMPHostType>>, true);
 }

@@ -1,0 +1,107 @@
+/* ----------------------------------------------------------------------
+   GRANSPH: compute sph/wallforce.
+
+   pair sph/granular adds to the force of every dummy particle the force the
+   grains exert on it (eq. 9), so the force of the grains on a wall is the sum
+   of the forces of its dummy particles, and eq. 10 its component along the
+   wall normal.
+------------------------------------------------------------------------- */
+
+#include "compute_sph_wallforce.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_sph_integrate.h"
+#include "force.h"
+#include "group.h"
+#include "modify.h"
+#include "update.h"
+
+#include <cmath>
+
+using namespace LAMMPS_NS;
+
+/* ----------------------------------------------------------------------
+   compute ID wall-group sph/wallforce nx ny nz
+------------------------------------------------------------------------- */
+
+ComputeSPHWallForce::ComputeSPHWallForce(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg)
+{
+  if (narg != 6) error->all(FLERR, "Illegal compute sph/wallforce command: expected nx ny nz");
+  for (int a = 0; a < 3; ++a) normal[a] = utils::numeric(FLERR, arg[3 + a], false, lmp);
+  const double norm = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+  if (norm == 0.0) error->all(FLERR, "Compute sph/wallforce: normal nx ny nz must be non-zero");
+  if (domain->dimension == 2 && normal[2] != 0.0)
+    error->all(FLERR, "Compute sph/wallforce: normal must have nz = 0 for a 2d simulation");
+  for (int a = 0; a < 3; ++a) normal[a] /= norm;
+
+  vector_flag = 1;
+  size_vector = 4;
+  extvector = 1;    // a total force: grows with the size of the wall
+  vector = new double[size_vector];
+}
+
+ComputeSPHWallForce::~ComputeSPHWallForce()
+{
+  delete[] vector;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeSPHWallForce::init()
+{
+  if (!force->pair_match("sph/granular", 0))
+    error->all(FLERR, "Compute sph/wallforce requires pair_style sph/granular");
+
+  const FixSPHIntegrate *integrator = nullptr;
+  for (int i = 0; i < modify->nfix && !integrator; ++i)
+    integrator = dynamic_cast<FixSPHIntegrate *>(modify->fix[i]);
+  if (!integrator)
+    error->all(FLERR,
+               "Compute sph/wallforce requires a GRANSPH integrator (fix sph/elastoplastic or "
+               "fix sph/phasechange)");
+  if (!integrator->wallbit)
+    error->all(FLERR, "Compute sph/wallforce: fix {} has no walls group (keyword walls)",
+               integrator->id);
+  // the pair style computes the wall force only for the fix's dummy particles
+  if (any_atom(integrator->wallbit, false))
+    error->all(FLERR, "Compute sph/wallforce: group {} has atoms outside the walls group of fix {}",
+               group->names[igroup], integrator->id);
+
+  // fix gravity adds m g to the force of the atoms it acts on
+  for (int i = 0; i < modify->nfix; ++i) {
+    const Fix *fix = modify->fix[i];
+    if (!utils::strmatch(fix->style, "^gravity") || !any_atom(fix->groupbit, true)) continue;
+    if (comm->me == 0)
+      error->warning(FLERR,
+                     "Compute sph/wallforce: fix gravity {} acts on atoms of group {}, so their "
+                     "weight is added to the wall force",
+                     fix->id, group->names[igroup]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   Fx, Fy, Fz of the grains on the wall, then F_W = F . n (eq. 10)
+------------------------------------------------------------------------- */
+
+void ComputeSPHWallForce::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  group->fcm(igroup, vector);
+  vector[3] = vector[0] * normal[0] + vector[1] * normal[1] + vector[2] * normal[2];
+}
+
+// whether any atom of the group, on any rank, is inside (or outside) the group of `bit`
+bool ComputeSPHWallForce::any_atom(int bit, bool inside) const
+{
+  const int *mask = atom->mask;
+  int local = 0;
+  for (int i = 0; i < atom->nlocal && !local; ++i)
+    local = (mask[i] & groupbit) && ((mask[i] & bit) != 0) == inside;
+  int all = 0;
+  MPI_Allreduce(&local, &all, 1, MPI_INT, MPI_MAX, world);
+  return all;
+}

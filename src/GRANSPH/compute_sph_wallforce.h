@@ -1,0 +1,35 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: compute sph/wallforce, the total force of the grains on a wall of
+   dummy particles and its normal component (paper eqs. 9-10).
+------------------------------------------------------------------------- */
+
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(sph/wallforce,ComputeSPHWallForce);
+// clang-format on
+#else
+
+#ifndef LMP_COMPUTE_SPH_WALLFORCE_H
+#define LMP_COMPUTE_SPH_WALLFORCE_H
+
+#include "compute.h"
+
+namespace LAMMPS_NS {
+
+class ComputeSPHWallForce : public Compute {
+ public:
+  ComputeSPHWallForce(class LAMMPS *, int, char **);
+  ~ComputeSPHWallForce() override;
+  void init() override;
+  void compute_vector() override;
+
+ protected:
+  double normal[3];    // unit normal of the wall
+
+  bool any_atom(int bit, bool inside) const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,49 @@
+/* ----------------------------------------------------------------------
+   GRANSPH: Kokkos twin of compute sph/wallforce.
+------------------------------------------------------------------------- */
+
+#include "compute_sph_wallforce_kokkos.h"
+
+#include "atom_kokkos.h"
+#include "atom_masks.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+template <class DeviceType>
+ComputeSPHWallForceKokkos<DeviceType>::ComputeSPHWallForceKokkos(LAMMPS *lmp, int narg,
+                                                                   char **arg) :
+    ComputeSPHWallForce(lmp, narg, arg)
+{
+  kokkosable = 1;
+  atomKK = (AtomKokkos *) atom;
+  execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
+  datamask_read = F_MASK | MASK_MASK;
+  datamask_modify = EMPTY_MASK;
+}
+
+template <class DeviceType> void ComputeSPHWallForceKokkos<DeviceType>::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  atomKK->sync(execution_space, datamask_read);
+  auto f = atomKK->k_f.template view<DeviceType>();
+  auto mask = atomKK->k_mask.template view<DeviceType>();
+  const int groupbit = this->groupbit;
+  double sum[3] = {0.0, 0.0, 0.0};
+  for (int a = 0; a < 3; ++a)
+    Kokkos::parallel_reduce(
+        Kokkos::RangePolicy<DeviceType>(0, atom->nlocal),
+        LAMMPS_LAMBDA(const int i, double &s) {
+          if (mask(i) & groupbit) s += f(i, a);
+        },
+        sum[a]);
+  MPI_Allreduce(sum, vector, 3, MPI_DOUBLE, MPI_SUM, world);
+  vector[3] = vector[0] * normal[0] + vector[1] * normal[1] + vector[2] * normal[2];
+}
+
+namespace LAMMPS_NS {
+template class ComputeSPHWallForceKokkos<LMPDeviceType>;
+#ifdef LMP_KOKKOS_GPU
+template class ComputeSPHWallForceKokkos<LMPHostType>;
+#endif
+}    // namespace LAMMPS_NS

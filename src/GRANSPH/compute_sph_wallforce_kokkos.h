@@ -1,0 +1,31 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: Kokkos twin of compute sph/wallforce: the sum of the forces on the
+   wall's dummy particles is reduced where the forces are, on the device.
+------------------------------------------------------------------------- */
+
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(sph/wallforce/kk,ComputeSPHWallForceKokkos<LMPDeviceType>);
+ComputeStyle(sph/wallforce/kk/device,ComputeSPHWallForceKokkos<LMPDeviceType>);
+ComputeStyle(sph/wallforce/kk/host,ComputeSPHWallForceKokkos<LMPHostType>);
+// clang-format on
+#else
+
+#ifndef LMP_COMPUTE_SPH_WALLFORCE_KOKKOS_H
+#define LMP_COMPUTE_SPH_WALLFORCE_KOKKOS_H
+
+#include "compute_sph_wallforce.h"
+#include "kokkos_type.h"
+
+namespace LAMMPS_NS {
+
+template <class DeviceType> class ComputeSPHWallForceKokkos : public ComputeSPHWallForce {
+ public:
+  ComputeSPHWallForceKokkos(class LAMMPS *, int, char **);
+  void compute_vector() override;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

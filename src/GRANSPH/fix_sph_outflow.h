@@ -1,0 +1,44 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: fix sph/outflow, deletes the particles of its group that have left
+   a region, e.g. sand flowing off the end of a flume.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(sph/outflow,FixSPHOutflow);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_SPH_OUTFLOW_H
+#define LMP_FIX_SPH_OUTFLOW_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixSPHOutflow : public Fix {
+ public:
+  FixSPHOutflow(class LAMMPS *, int, char **);
+  ~FixSPHOutflow() override;
+  int setmask() override;
+  void init() override;
+  void setup_pre_exchange() override;
+  void pre_exchange() override;
+  double compute_scalar() override;
+  double compute_vector(int) override;
+
+ private:
+  char *idregion;
+  int iregion;
+  int every;              // reneighbor at least every this many steps (0: as LAMMPS decides)
+  bigint nremoved;        // atoms deleted so far, all ranks
+  double mass_removed;    // their mass
+
+  void remove_outside();
+  void warn_if_region_leaves_box() const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
