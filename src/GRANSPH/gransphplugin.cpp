@@ -14,6 +14,7 @@
 #include "pair_sph_granular.h"
 
 #include "compute_sph_wallforce_kokkos.h"
+#include "fix_sph_inflow_kokkos.h"
 #include "fix_sph_model_kokkos.h"
 #include "pair_sph_granular_kokkos.h"
 
@@ -116,4 +117,9 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
       "GRANSPH: force of the grains on a wall of dummy particles, Kokkos",
       (void *) &compute_creator<ComputeSPHWallForceKokkos<LMPDeviceType>>,
       (void *) &compute_creator<ComputeSPHWallForceKokkos<LMPHostType>>, true);
+  register_kokkos_style(reg, lmp, handle, "fix",
+                        {"sph/inflow/kk", "sph/inflow/kk/device", "sph/inflow/kk/host"},
+                        "GRANSPH: granular nozzle, Kokkos (inserts on the host)",
+                        (void *) &fix_creator<FixSPHInflowKokkos>,
+                        (void *) &fix_creator<FixSPHInflowKokkos>, true);
 }

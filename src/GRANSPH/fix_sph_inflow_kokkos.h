@@ -1,0 +1,34 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: Kokkos twin of fix sph/inflow. Creating atoms is host work in
+   LAMMPS 29Sep2021 (as for fix deposit), so the twin only tells Kokkos what it
+   touches: nothing on ordinary steps, and all atom data on the host in the
+   pre_exchange where a layer enters. Without it, LAMMPS would copy every atom
+   to the host on every step for this fix's post_integrate and end_of_step.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(sph/inflow/kk,FixSPHInflowKokkos);
+FixStyle(sph/inflow/kk/device,FixSPHInflowKokkos);
+FixStyle(sph/inflow/kk/host,FixSPHInflowKokkos);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_SPH_INFLOW_KOKKOS_H
+#define LMP_FIX_SPH_INFLOW_KOKKOS_H
+
+#include "fix_sph_inflow.h"
+
+namespace LAMMPS_NS {
+
+class FixSPHInflowKokkos : public FixSPHInflow {
+ public:
+  FixSPHInflowKokkos(class LAMMPS *, int, char **);
+  void setup_pre_exchange() override;
+  void pre_exchange() override;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
