@@ -21,6 +21,13 @@
 using namespace LAMMPS_NS;
 using FSI = FixSPHIntegrate;
 
+namespace {
+// Grains cost far more than dummy particles and often come first in memory, so
+// equal static chunks leave threads idle: hand out the particles dynamically.
+template <class DeviceType>
+using ParticlePolicy = Kokkos::RangePolicy<DeviceType, Kokkos::Schedule<Kokkos::Dynamic>>;
+}    // namespace
+
 template <class DeviceType>
 PairSPHGranularKokkos<DeviceType>::PairSPHGranularKokkos(LAMMPS *lmp) : PairSPHGranular(lmp)
 {
@@ -116,7 +123,7 @@ void PairSPHGranularKokkos<DeviceType>::wall_stresses(const DeviceParticles<Devi
   const double gx = g[0], gy = g[1], gz = g[2];
   const double inv_dt = update->setupflag ? 0.0 : 1.0 / update->dt;
   Kokkos::parallel_for(
-      Kokkos::RangePolicy<DeviceType>(0, list->inum), LAMMPS_LAMBDA(const int ii) {
+      ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)), LAMMPS_LAMBDA(const int ii) {
         const int d = ilist(ii);
         if (!p.wall(d)) return;
         const double gd[3] = {gx, gy, gz};
@@ -142,7 +149,7 @@ void PairSPHGranularKokkos<DeviceType>::rates_and_forces(const DeviceParticles<D
   const double ftm2v = force->ftm2v;
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
-      Kokkos::RangePolicy<DeviceType>(0, list->inum),
+      ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
       LAMMPS_LAMBDA(const int ii, EV_FLOAT &sum) {
         const int i = ilist(ii);
         double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
