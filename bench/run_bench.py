@@ -19,7 +19,7 @@ COLLAPSE = os.path.join(TOP, "examples", "column_collapse", "in.column_collapse"
 PEER = os.path.join(HERE, "in.taitwater_peer")
 
 # spacing -> about 2e4, 1e5, 4e5 particles (sand column plus its floor)
-SIZES = [(0.0158, 200), (0.0077, 60), (0.0042, 20)]
+SIZES = [(0.0123, 200), (0.0062, 60), (0.0036, 20)]
 RUNS = [
     ("plain, 1 rank", COLLAPSE, 1, []),
     ("plain, 2 ranks", COLLAPSE, 2, []),
