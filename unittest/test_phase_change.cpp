@@ -2,6 +2,7 @@
 
 #include "gransph_drucker_prager.h"
 #include "gransph_phase_change.h"
+#include "tensor_test_helpers.h"
 
 #include <gtest/gtest.h>
 
@@ -26,32 +27,6 @@ double tau_of(const Sym3 &s)
 Sym3 sheared(double p, double tau) { return {-p, -p, -p, tau, 0.0, 0.0}; }
 const Sym3 SHEAR_RATE{0.0, 0.0, 0.0, 50.0, 0.0, 0.0};
 
-Sym3 rotate(const Sym3 &s, double a, double b)
-{
-  // rotation by a about z, then b about x
-  const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b);
-  const double Rz[3][3] = {{ca, -sa, 0}, {sa, ca, 0}, {0, 0, 1}};
-  const double Rx[3][3] = {{1, 0, 0}, {0, cb, -sb}, {0, sb, cb}};
-  double R[3][3] = {};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) R[i][j] += Rx[i][k] * Rz[k][j];
-  const double S[3][3] = {{s.xx, s.xy, s.xz}, {s.xy, s.yy, s.yz}, {s.xz, s.yz, s.zz}};
-  double o[3][3] = {};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k)
-        for (int l = 0; l < 3; ++l) o[i][j] += R[i][k] * S[k][l] * R[j][l];
-  return {o[0][0], o[1][1], o[2][2], o[0][1], o[0][2], o[1][2]};
-}
-
-double max_abs_diff(const Sym3 &a, const Sym3 &b)
-{
-  const Sym3 d = a - b;
-  double m = 0.0;
-  for (double v : {d.xx, d.yy, d.zz, d.xy, d.xz, d.yz}) m = std::fmax(m, std::fabs(v));
-  return m;
-}
 }    // namespace
 
 TEST(PhaseChange, ElasticBranchReturnsTheTrialStress)

@@ -42,3 +42,21 @@ def result_line(stdout):
         if line.startswith("result:"):
             return line.split()
     raise RuntimeError("no 'result:' line in the output")
+
+
+class Checks:
+    """Named pass/fail checks that print as they go and end with the
+    'N passed, N failed' line ctest's output is read for."""
+
+    def __init__(self):
+        self.passed = self.failed = 0
+
+    def __call__(self, name, ok, detail):
+        print(f"{'ok    ' if ok else 'FAILED'} {name}: {detail}", flush=True)
+        self.passed += bool(ok)
+        self.failed += not ok
+
+    def finish(self):
+        print(f"{self.passed} passed, {self.failed} failed")
+        raise SystemExit(1 if self.failed else 0)
+

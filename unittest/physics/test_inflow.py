@@ -24,14 +24,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 INPUT = os.path.join(HERE, "in.inflow")
 DX, R, V = 0.004, 0.01, 10.0
 
-passed = failed = 0
-
-
-def check(name, ok, detail):
-    global passed, failed
-    print(f"{'ok    ' if ok else 'FAILED'} {name}: {detail}")
-    passed += bool(ok)
-    failed += not ok
+check = gransph_run.Checks()
 
 
 def run(tmp, variables, ranks=1):
@@ -130,5 +123,4 @@ with tempfile.TemporaryDirectory() as tmp:
                  "group all is not integrated: the integrator fix sph acts on group sand")
     expect_error(tmp, "nozzle outside the box", {"center": "0 0 0.2"}, "new particles lie outside the box")
 
-print(f"{passed} passed, {failed} failed")
-raise SystemExit(1 if failed else 0)
+check.finish()

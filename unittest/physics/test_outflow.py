@@ -14,14 +14,7 @@ import gransph_run
 HERE = os.path.dirname(os.path.abspath(__file__))
 INPUT = os.path.join(HERE, "in.outflow")
 
-passed = failed = 0
-
-
-def check(name, ok, detail):
-    global passed, failed
-    print(f"{'ok    ' if ok else 'FAILED'} {name}: {detail}")
-    passed += bool(ok)
-    failed += not ok
+check = gransph_run.Checks()
 
 
 def run_lmp(tmp, path, variables=None, ranks=1):
@@ -95,5 +88,4 @@ fix out all sph/outflow {args}
           code == 0 and "WARNING: Fix sph/outflow: region in extends beyond a fixed boundary" in out,
           next((l for l in out.splitlines() if "WARNING" in l or "ERROR" in l), "no warning"))
 
-print(f"{passed} passed, {failed} failed")
-raise SystemExit(1 if failed else 0)
+check.finish()

@@ -15,14 +15,7 @@ DX, G = 0.02, 9.81
 FLOOR_MASS = 3 * 6 * 6 * 2450 * DX**3      # three layers of 6 x 6 dummy particles
 TILT = (1 / 3, 2 / 3, -2 / 3)               # the input's tilted normal (1, 2, -2), normalised
 
-passed = failed = 0
-
-
-def check(name, ok, detail):
-    global passed, failed
-    print(f"{'ok    ' if ok else 'FAILED'} {name}: {detail}")
-    passed += bool(ok)
-    failed += not ok
+check = gransph_run.Checks()
 
 
 def wall_force(tmp, ranks=1, args=(), **variables):
@@ -123,5 +116,4 @@ with tempfile.TemporaryDirectory() as tmp:
         code, error = first_error(tmp, text)
         check(name, code != 0 and re.search(expected, error), error or "no error")
 
-print(f"{passed} passed, {failed} failed")
-raise SystemExit(1 if failed else 0)
+check.finish()
