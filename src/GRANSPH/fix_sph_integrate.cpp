@@ -13,7 +13,6 @@
 #include "error.h"
 #include "force.h"
 #include "group.h"
-#include "integrate.h"
 #include "memory.h"
 #include "modify.h"
 #include "pair.h"
@@ -133,11 +132,6 @@ void FixSPHIntegrate::setup(int /*vflag*/)
 void FixSPHIntegrate::end_of_step()
 {
   reset_cfl_timestep();
-}
-
-void FixSPHIntegrate::reset_dt()
-{
-  // the timestep is read from update->dt whenever it is needed
 }
 
 /* ---------------------------------------------------------------------- */

@@ -32,7 +32,6 @@ class FixSPHIntegrate : public Fix {
   void setup_pre_force(int) override;
   void setup(int) override;
   void end_of_step() override;
-  void reset_dt() override;
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;

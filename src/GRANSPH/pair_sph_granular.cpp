@@ -16,7 +16,6 @@
 #include "error.h"
 #include "fix_sph_integrate.h"
 #include "force.h"
-#include "gransph_integrator.h"
 #include "gransph_neighbour_sums.h"
 #include "memory.h"
 #include "modify.h"
