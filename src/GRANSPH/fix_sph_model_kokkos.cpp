@@ -185,7 +185,7 @@ template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Mode
   if (predict) k_start.template modify<DeviceType>();
 }
 
-// non-finite states or non-positive densities among the granular particles, all ranks
+// non-finite states or non-positive densities among this rank's granular particles
 template <class DeviceType, class Model>
 int FixSPHModelKokkos<DeviceType, Model>::count_bad_states()
 {
@@ -205,9 +205,7 @@ int FixSPHModelKokkos<DeviceType, Model>::count_bad_states()
         if (!(sum - sum == 0.0) || !(state(i, FSI::RHO) > 0.0)) ++count;
       },
       bad);
-  int any = 0;
-  MPI_Allreduce(&bad, &any, 1, MPI_INT, MPI_SUM, this->world);
-  return any;
+  return bad;    // local: the rank that has one stops the run (error->one), no collective
 }
 
 // eq. 19 with both maxima reduced on the device
