@@ -12,6 +12,13 @@ using namespace GRANSPH;
 namespace {
 constexpr double PI = 3.14159265358979323846;
 
+// a particle at rest at the origin, with Young's modulus 20 MPa for its sound speed
+PairParticle particle(double mass, double rho, const Sym3 &sigma)
+{
+  const double zero[3] = {0.0, 0.0, 0.0};
+  return PairParticle::make(zero, zero, mass, rho, sigma, 20e6);
+}
+
 // Simpson's rule over the radial support [0, 2h] of r^(dim-1) W(r)
 double radial_integral(int dim, double h)
 {
@@ -21,7 +28,7 @@ double radial_integral(int dim, double h)
   for (int k = 0; k <= n; ++k) {
     const double r = k * dr;
     const double weight = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
-    sum += weight * std::pow(r, dim - 1) * WendlandC2::w(r * r, h, dim);
+    sum += weight * std::pow(r, dim - 1) * WendlandC2::make(h, dim).w(r * r);
   }
   const double shell = dim == 3 ? 4.0 * PI : 2.0 * PI;
   return shell * sum * dr / 3.0;
@@ -39,9 +46,9 @@ TEST(WendlandC2, NormalisedIn2DAnd3D)
 TEST(WendlandC2, CompactSupportOf2h)
 {
   const double h = 0.2;
-  EXPECT_GT(WendlandC2::w(std::pow(1.999 * h, 2), h, 3), 0.0);
-  EXPECT_EQ(WendlandC2::w(std::pow(2.0 * h, 2), h, 3), 0.0);
-  EXPECT_EQ(WendlandC2::grad_factor(std::pow(2.5 * h, 2), h, 2), 0.0);
+  EXPECT_GT(WendlandC2::make(h, 3).w(std::pow(1.999 * h, 2)), 0.0);
+  EXPECT_EQ(WendlandC2::make(h, 3).w(std::pow(2.0 * h, 2)), 0.0);
+  EXPECT_EQ(WendlandC2::make(h, 2).grad_factor(std::pow(2.5 * h, 2)), 0.0);
 }
 
 TEST(WendlandC2, GradientMatchesFiniteDifference)
@@ -49,12 +56,11 @@ TEST(WendlandC2, GradientMatchesFiniteDifference)
   const double h = 0.3;
   for (int dim : {2, 3})
     for (double r : {0.05, 0.2, 0.41, 0.59}) {
+      const WendlandC2 kernel = WendlandC2::make(h, dim);
       const double eps = 1e-6;
-      const double dwdr =
-          (WendlandC2::w((r + eps) * (r + eps), h, dim) - WendlandC2::w((r - eps) * (r - eps), h, dim)) /
-          (2.0 * eps);
+      const double dwdr = (kernel.w((r + eps) * (r + eps)) - kernel.w((r - eps) * (r - eps))) / (2.0 * eps);
       // grad_i W = F x_ij, so |grad W| = F r along x_ij
-      EXPECT_NEAR(WendlandC2::grad_factor(r * r, h, dim) * r, dwdr, 1e-6 * std::fabs(dwdr) + 1e-9);
+      EXPECT_NEAR(kernel.grad_factor(r * r) * r, dwdr, 1e-6 * std::fabs(dwdr) + 1e-9);
     }
 }
 
@@ -63,7 +69,7 @@ TEST(WendlandC2, GradientIsAntisymmetric)
   const double h = 0.1;
   const double xij[3] = {0.03, -0.07, 0.05};
   const double rsq = xij[0] * xij[0] + xij[1] * xij[1] + xij[2] * xij[2];
-  const double f = WendlandC2::grad_factor(rsq, h, 3);
+  const double f = WendlandC2::make(h, 3).grad_factor(rsq);
   for (int a = 0; a < 3; ++a) EXPECT_DOUBLE_EQ(f * xij[a], -(f * -xij[a]));
   EXPECT_LT(f, 0.0);    // W decreases away from the particle
 }
@@ -91,11 +97,11 @@ struct Lattice {
   ParticleRates rates(const double L[3][3]) const
   {
     ParticleRates r = ParticleRates::zero();
-    const ParticleView p{mass(), rho, Sym3::zero()};
+    const PairParticle p = particle(mass(), rho, Sym3::zero());
     for_neighbours([&](const double *xj) {
       const double dx_ij[3] = {-xj[0], -xj[1], -xj[2]};
       const double rsq = xj[0] * xj[0] + xj[1] * xj[1] + xj[2] * xj[2];
-      const double fw = WendlandC2::grad_factor(rsq, h, 3);
+      const double fw = WendlandC2::make(h, 3).grad_factor(rsq);
       const double gradw[3] = {fw * dx_ij[0], fw * dx_ij[1], fw * dx_ij[2]};
       double dv[3];
       for (int a = 0; a < 3; ++a) dv[a] = -(L[a][0] * xj[0] + L[a][1] * xj[1] + L[a][2] * xj[2]);
@@ -111,7 +117,7 @@ struct Lattice {
     double sum = 0.0;
     for_neighbours([&](const double *xj) {
       const double rsq = xj[0] * xj[0] + xj[1] * xj[1] + xj[2] * xj[2];
-      sum += xj[0] * WendlandC2::grad_factor(rsq, h, 3) * -xj[0];
+      sum += xj[0] * WendlandC2::make(h, 3).grad_factor(rsq) * -xj[0];
     });
     return sum * dx * dx * dx;
   }
@@ -126,9 +132,9 @@ TEST(WendlandC2, GradientConsistencyOnALattice)
 TEST(WendlandC2, LatticeSumIsPartitionOfUnity)
 {
   const Lattice lat;
-  double sum = WendlandC2::w(0.0, lat.h, 3);
+  double sum = WendlandC2::make(lat.h, 3).w(0.0);
   lat.for_neighbours([&](const double *xj) {
-    sum += WendlandC2::w(xj[0] * xj[0] + xj[1] * xj[1] + xj[2] * xj[2], lat.h, 3);
+    sum += WendlandC2::make(lat.h, 3).w(xj[0] * xj[0] + xj[1] * xj[1] + xj[2] * xj[2]);
   });
   EXPECT_NEAR(sum * std::pow(lat.dx, 3), 1.0, 0.01);
 }
@@ -163,27 +169,27 @@ TEST(PairTerms, UniformCompressionRaisesDensity)
 
 TEST(PairTerms, ViscosityOnlyBetweenApproachingParticles)
 {
-  const ParticleView p{1.0, 1000.0, Sym3::zero()};
+  const PairParticle p = particle(1.0, 1000.0, Sym3::zero());
   const double dx[3] = {0.01, 0.0, 0.0};
   const double approach[3] = {-1.0, 0.0, 0.0};
   const double separate[3] = {1.0, 0.0, 0.0};
-  EXPECT_GT(monaghan_viscosity(dx, approach, 1e-4, 0.012, 1.0, 1.0, 20e6, p, p), 0.0);
-  EXPECT_EQ(monaghan_viscosity(dx, separate, 1e-4, 0.012, 1.0, 1.0, 20e6, p, p), 0.0);
+  EXPECT_GT(monaghan_viscosity(dx, approach, 1e-4, 0.012, 1.0, 1.0, p, p), 0.0);
+  EXPECT_EQ(monaghan_viscosity(dx, separate, 1e-4, 0.012, 1.0, 1.0, p, p), 0.0);
 }
 
 TEST(PairTerms, PressureAndViscosityRepelAndConserveMomentum)
 {
   // two particles under pressure p: i is pushed away from j, and f_ij = -f_ji
-  const ParticleView pi{0.5, 1000.0, Sym3::iso(-2.0e4)};
-  const ParticleView pj{0.7, 1100.0, Sym3::iso(-1.0e4)};
+  const PairParticle pi = particle(0.5, 1000.0, Sym3::iso(-2.0e4));
+  const PairParticle pj = particle(0.7, 1100.0, Sym3::iso(-1.0e4));
   const double h = 0.012;
   const double xij[3] = {0.01, 0.002, -0.003};
   const double vij[3] = {-0.4, 0.1, 0.0};
   const double rsq = xij[0] * xij[0] + xij[1] * xij[1] + xij[2] * xij[2];
-  const double fw = WendlandC2::grad_factor(rsq, h, 3);
+  const double fw = WendlandC2::make(h, 3).grad_factor(rsq);
   const double gi[3] = {fw * xij[0], fw * xij[1], fw * xij[2]};
   const double gj[3] = {-gi[0], -gi[1], -gi[2]};
-  const double visc = monaghan_viscosity(xij, vij, rsq, h, 1.0, 1.0, 20e6, pi, pj);
+  const double visc = monaghan_viscosity(xij, vij, rsq, h, 1.0, 1.0, pi, pj);
   double ai[3] = {0.0, 0.0, 0.0}, aj[3] = {0.0, 0.0, 0.0};
   momentum_term(pi, pj, visc, gi, ai);
   momentum_term(pj, pi, visc, gj, aj);
@@ -198,7 +204,7 @@ TEST(WallSums, HydrostaticExtrapolationBelowGrains)
   const double rho = 1500.0, h = 0.01;
   const Sym3 sk = Sym3::iso(-3000.0);
   const double r_dk[3] = {0.0, 0.0, -0.01};    // dummy 1 cm below the grain
-  sums.add(sk, rho, r_dk, WendlandC2::w(1e-4, h, 3));
+  sums.add(sk, rho, r_dk, WendlandC2::make(h, 3).w(1e-4));
   const double g[3] = {0.0, 0.0, -9.81};
   const Sym3 sd = sums.stress(g);
   // one layer deeper: more compressive by rho g dz

@@ -173,7 +173,8 @@ template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Mode
     functor.use_rmass = this->atom->rmass != nullptr;
     functor.dt = this->update->dt;
     functor.ftm2v = this->force->ftm2v;
-    Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal), functor);
+    Kokkos::parallel_for(
+        ParticlePolicy<DeviceType>(0, this->atom->nlocal, Kokkos::ChunkSize(256)), functor);
   };
   if (predict)
     run(StepFunctor<DeviceType, Model, true>());

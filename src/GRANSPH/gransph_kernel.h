@@ -10,31 +10,39 @@
 
 namespace GRANSPH {
 
+// The kernel for one smoothing length h; the constants are set once so that a
+// pair costs one sqrt and no division.
 struct WendlandC2 {
-  // alpha_d h^dim: 7/(4 pi) in 2D, 21/(16 pi) in 3D
-  KOKKOS_INLINE_FUNCTION static double norm(int dim, double h)
+  double h, inv_h;
+  double w_norm;       // alpha_d: 7/(4 pi h^2) in 2D, 21/(16 pi h^3) in 3D
+  double grad_norm;    // -5 alpha_d / h^2
+
+  KOKKOS_INLINE_FUNCTION static WendlandC2 make(double h, int dim)
   {
     constexpr double pi = 3.14159265358979323846;
-    return dim == 2 ? 7.0 / (4.0 * pi * h * h) : 21.0 / (16.0 * pi * h * h * h);
+    const double norm = dim == 2 ? 7.0 / (4.0 * pi * h * h) : 21.0 / (16.0 * pi * h * h * h);
+    return {h, 1.0 / h, norm, -5.0 * norm / (h * h)};
   }
 
+  KOKKOS_INLINE_FUNCTION double cutsq() const { return 4.0 * h * h; }
+
   // W(r, h) from r^2
-  KOKKOS_INLINE_FUNCTION static double w(double rsq, double h, int dim)
+  KOKKOS_INLINE_FUNCTION double w(double rsq) const
   {
-    const double q = sqrt(rsq) / h;
+    const double q = sqrt(rsq) * inv_h;
     if (q >= 2.0) return 0.0;
     const double t = 1.0 - 0.5 * q;
-    return norm(dim, h) * t * t * t * t * (2.0 * q + 1.0);
+    return w_norm * t * t * t * t * (2.0 * q + 1.0);
   }
 
   // F with grad_i W(x_i - x_j) = F * (x_i - x_j); dW/dq = -5 q (1 - q/2)^3 alpha_d,
   // so F = -5 alpha_d (1 - q/2)^3 / h^2 and no division by r is needed.
-  KOKKOS_INLINE_FUNCTION static double grad_factor(double rsq, double h, int dim)
+  KOKKOS_INLINE_FUNCTION double grad_factor(double rsq) const
   {
-    const double q = sqrt(rsq) / h;
+    const double q = sqrt(rsq) * inv_h;
     if (q >= 2.0) return 0.0;
     const double t = 1.0 - 0.5 * q;
-    return -5.0 * norm(dim, h) * t * t * t / (h * h);
+    return grad_norm * t * t * t;
   }
 };
 

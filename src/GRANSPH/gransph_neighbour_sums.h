@@ -3,10 +3,9 @@
    the plain and the Kokkos pair styles. `Particles` is an accessor with
 
      int    num_neighbours(int i), neighbour(int i, int k)  (full list, masked)
-     double x(int i, int a), v(int i, int a)
+     const GRANSPH::PairParticle &particle(int i)
      bool   granular(int i), wall(int i)
-     GRANSPH::ParticleView view(int i)
-     double E, h, alpha, beta; int dim    (E: Young's modulus, for the sound speed)
+     GRANSPH::WendlandC2 kernel; double alpha, beta   (Monaghan viscosity)
 
    All loops run over one particle i and write only to i (full neighbour list).
 ------------------------------------------------------------------------- */
@@ -37,20 +36,21 @@ struct PairGeometry {
   double visc;
 };
 
-// Fills g for neighbour j of i; false if j is outside the support (or on top of i).
+// Fills g for the pair pi-pj; false if pj is outside the support. A neighbour on top
+// of pi (r = 0) has grad W = 0 and Pi = 0, so it adds nothing.
 template <class Particles>
-KOKKOS_INLINE_FUNCTION bool pair_geometry(const Particles &p, int i, int j, const ParticleView &pi,
-                                          const ParticleView &pj, PairGeometry &g)
+KOKKOS_INLINE_FUNCTION bool pair_geometry(const Particles &p, const PairParticle &pi,
+                                          const PairParticle &pj, PairGeometry &g)
 {
-  for (int a = 0; a < 3; ++a) g.dx[a] = p.x(i, a) - p.x(j, a);
+  for (int a = 0; a < 3; ++a) g.dx[a] = pi.x[a] - pj.x[a];
   const double rsq = g.dx[0] * g.dx[0] + g.dx[1] * g.dx[1] + g.dx[2] * g.dx[2];
-  if (rsq >= 4.0 * p.h * p.h || rsq == 0.0) return false;
-  const double fw = WendlandC2::grad_factor(rsq, p.h, p.dim);
+  if (rsq >= p.kernel.cutsq()) return false;
+  const double fw = p.kernel.grad_factor(rsq);
   for (int a = 0; a < 3; ++a) {
-    g.dv[a] = p.v(i, a) - p.v(j, a);
+    g.dv[a] = pi.v[a] - pj.v[a];
     g.gradw[a] = fw * g.dx[a];
   }
-  g.visc = monaghan_viscosity(g.dx, g.dv, rsq, p.h, p.alpha, p.beta, p.E, pi, pj);
+  g.visc = monaghan_viscosity(g.dx, g.dv, rsq, p.kernel.h, p.alpha, p.beta, pi, pj);
   return true;
 }
 
@@ -59,14 +59,14 @@ template <class Particles>
 KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir)
 {
   ParticleRates r = ParticleRates::zero();
-  const ParticleView pi = p.view(i);
+  const PairParticle pi = p.particle(i);
   const int n = p.num_neighbours(i);
   for (int k = 0; k < n; ++k) {
     const int j = p.neighbour(i, k);
     if (!p.granular(j) && !p.wall(j)) continue;
-    const ParticleView pj = p.view(j);
+    const PairParticle &pj = p.particle(j);
     PairGeometry g;
-    if (!pair_geometry(p, i, j, pi, pj, g)) continue;
+    if (!pair_geometry(p, pi, pj, g)) continue;
     if (vir) {
       double acc[3] = {0.0, 0.0, 0.0};
       momentum_term(pi, pj, g.visc, g.gradw, acc);
@@ -83,16 +83,16 @@ template <class Particles>
 KOKKOS_INLINE_FUNCTION Sym3 wall_stress(const Particles &p, int d, const double *g_minus_a)
 {
   WallSums sums = WallSums::zero();
-  const double cutsq = 4.0 * p.h * p.h;
+  const PairParticle pd = p.particle(d);
   const int n = p.num_neighbours(d);
   for (int k = 0; k < n; ++k) {
     const int j = p.neighbour(d, k);
     if (!p.granular(j)) continue;
-    const double r_dk[3] = {p.x(d, 0) - p.x(j, 0), p.x(d, 1) - p.x(j, 1), p.x(d, 2) - p.x(j, 2)};
+    const PairParticle &pk = p.particle(j);
+    const double r_dk[3] = {pd.x[0] - pk.x[0], pd.x[1] - pk.x[1], pd.x[2] - pk.x[2]};
     const double rsq = r_dk[0] * r_dk[0] + r_dk[1] * r_dk[1] + r_dk[2] * r_dk[2];
-    if (rsq >= cutsq) continue;
-    const ParticleView pk = p.view(j);
-    sums.add(pk.sigma, pk.rho, r_dk, WendlandC2::w(rsq, p.h, p.dim));
+    if (rsq >= p.kernel.cutsq()) continue;
+    sums.add(pk.sigma, pk.rho, r_dk, p.kernel.w(rsq));
   }
   return sums.stress(g_minus_a);
 }
@@ -101,15 +101,15 @@ KOKKOS_INLINE_FUNCTION Sym3 wall_stress(const Particles &p, int d, const double 
 template <class Particles>
 KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force, double *vir)
 {
-  const ParticleView pd = p.view(d);
+  const PairParticle pd = p.particle(d);
   double acc[3] = {0.0, 0.0, 0.0};
   const int n = p.num_neighbours(d);
   for (int k = 0; k < n; ++k) {
     const int j = p.neighbour(d, k);
     if (!p.granular(j)) continue;
-    const ParticleView pj = p.view(j);
+    const PairParticle &pj = p.particle(j);
     PairGeometry g;
-    if (!pair_geometry(p, d, j, pd, pj, g)) continue;
+    if (!pair_geometry(p, pd, pj, g)) continue;
     double accj[3] = {0.0, 0.0, 0.0};
     momentum_term(pd, pj, g.visc, g.gradw, accj);
     for (int a = 0; a < 3; ++a) acc[a] += accj[a];

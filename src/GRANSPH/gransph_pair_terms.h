@@ -12,40 +12,53 @@
 
 namespace GRANSPH {
 
-// What a particle brings to a pair interaction.
-struct ParticleView {
-  double mass, rho;
-  Sym3 sigma;
-};
-
 // Sound speed of the paper, c = sqrt(E / rho) (eq. 19; LOQUAT uses sqrt(K / rho)).
 KOKKOS_INLINE_FUNCTION double sound_speed(double E, double rho)
 {
   return sqrt(E / rho);
 }
 
+// What a particle brings to its pair interactions, set once per evaluation so
+// that a pair needs no division or sqrt for it. Two cache lines: a neighbour's
+// position and velocity (the cut-off test, the viscosity) come in the first.
+struct alignas(64) PairParticle {
+  double x[3], v[3];
+  double rho, c;    // density and sound speed
+  Sym3 sigma;
+  double mass, inv_rho;
+
+  KOKKOS_INLINE_FUNCTION static PairParticle make(const double *x, const double *v, double mass,
+                                                  double rho, const Sym3 &sigma, double E)
+  {
+    return {{x[0], x[1], x[2]}, {v[0], v[1], v[2]}, rho, sound_speed(E, rho), sigma, mass,
+            1.0 / rho};
+  }
+};
+
 // Monaghan artificial viscosity Pi_ij, eq. 7, with phi = 0.1 h in the denominator.
-// dx = x_i - x_j, dv = v_i - v_j. Acts only between approaching particles, so the
-// sound speeds are only computed for those.
+// dx = x_i - x_j, dv = v_i - v_j. Acts only between approaching particles (v.x < 0):
+// clamping v.x to <= 0 gives Pi = 0 for the others without a branch, which the
+// neighbour loops cannot predict. (-alpha c_ij phi_ij + beta phi_ij^2) / rho_ij with
+// phi_ij = h v.x / d, d = r^2 + 0.01 h^2, is taken over one denominator.
 KOKKOS_INLINE_FUNCTION double monaghan_viscosity(const double *dx, const double *dv, double rsq,
-                                                 double h, double alpha, double beta, double E,
-                                                 const ParticleView &pi, const ParticleView &pj)
+                                                 double h, double alpha, double beta,
+                                                 const PairParticle &pi, const PairParticle &pj)
 {
   const double vdotx = dv[0] * dx[0] + dv[1] * dx[1] + dv[2] * dx[2];
-  if (vdotx >= 0.0) return 0.0;
-  const double phi = h * vdotx / (rsq + 0.01 * h * h);
-  const double c_ij = 0.5 * (sound_speed(E, pi.rho) + sound_speed(E, pj.rho));
+  const double hv = h * fmin(vdotx, 0.0);
+  const double d = rsq + 0.01 * h * h;
+  const double c_ij = 0.5 * (pi.c + pj.c);
   const double rho_ij = 0.5 * (pi.rho + pj.rho);
-  return (-alpha * c_ij * phi + beta * phi * phi) / rho_ij;
+  return hv * (beta * hv - alpha * c_ij * d) / (d * d * rho_ij);
 }
 
 // Acceleration of i due to j, eq. 6b: m_j ((s_i + s_j)/(rho_i rho_j) - Pi_ij I) grad_i W.
 // The viscous term is a pressure (Monaghan 1992), hence the minus sign under our
 // tension-positive stress; the paper's "+ Pi" assumes the opposite sign of Pi.
-KOKKOS_INLINE_FUNCTION void momentum_term(const ParticleView &pi, const ParticleView &pj,
+KOKKOS_INLINE_FUNCTION void momentum_term(const PairParticle &pi, const PairParticle &pj,
                                           double visc, const double *gradw, double *acc)
 {
-  const Sym3 t = (1.0 / (pi.rho * pj.rho)) * (pi.sigma + pj.sigma) - Sym3::iso(visc);
+  const Sym3 t = (pi.inv_rho * pj.inv_rho) * (pi.sigma + pj.sigma) - Sym3::iso(visc);
   acc[0] += pj.mass * (t.xx * gradw[0] + t.xy * gradw[1] + t.xz * gradw[2]);
   acc[1] += pj.mass * (t.xy * gradw[0] + t.yy * gradw[1] + t.yz * gradw[2]);
   acc[2] += pj.mass * (t.xz * gradw[0] + t.yz * gradw[1] + t.zz * gradw[2]);
@@ -66,15 +79,15 @@ struct ParticleRates {
 
 // All contributions of neighbour j to the rates of i. dx = x_i - x_j, dv = v_i - v_j,
 // gradw = grad_i W_ij.
-KOKKOS_INLINE_FUNCTION void add_neighbour(ParticleRates &r, const ParticleView &pi,
-                                          const ParticleView &pj, const double *dv,
+KOKKOS_INLINE_FUNCTION void add_neighbour(ParticleRates &r, const PairParticle &pi,
+                                          const PairParticle &pj, const double *dv,
                                           const double *gradw, double visc)
 {
   r.drho += pj.mass * (dv[0] * gradw[0] + dv[1] * gradw[1] + dv[2] * gradw[2]);
   momentum_term(pi, pj, visc, gradw, r.acc);
 
   // v_ji = -dv; eqs. 34-35 carry 1/2 m_j/rho_j
-  const double s = -0.5 * pj.mass / pj.rho;
+  const double s = -0.5 * pj.mass * pj.inv_rho;
   r.strain.xx += s * 2.0 * dv[0] * gradw[0];
   r.strain.yy += s * 2.0 * dv[1] * gradw[1];
   r.strain.zz += s * 2.0 * dv[2] * gradw[2];

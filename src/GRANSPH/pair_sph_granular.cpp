@@ -25,34 +25,25 @@
 #include "update.h"
 
 using namespace LAMMPS_NS;
-using GRANSPH::ParticleView;
+using GRANSPH::PairParticle;
 using GRANSPH::Sym3;
 
 namespace {
 
 // Host accessor for the shared neighbour sums (gransph_neighbour_sums.h).
 struct HostParticles {
-  double **pos, **vel, **state;
-  const double *rmass, *mass;
-  const int *type, *mask;
+  const PairParticle *particles;
   int **firstneigh;
-  const int *numneigh;
+  const int *numneigh, *mask;
   int granularbit, wallbit;
-  double E, h, alpha, beta;
-  int dim;
+  GRANSPH::WendlandC2 kernel;
+  double alpha, beta;
 
   int num_neighbours(int i) const { return numneigh[i]; }
   int neighbour(int i, int k) const { return firstneigh[i][k] & NEIGHMASK; }
-  double x(int i, int a) const { return pos[i][a]; }
-  double v(int i, int a) const { return vel[i][a]; }
+  const PairParticle &particle(int i) const { return particles[i]; }
   bool granular(int i) const { return mask[i] & granularbit; }
   bool wall(int i) const { return mask[i] & wallbit; }
-  ParticleView view(int i) const
-  {
-    const double rho = state[i][FixSPHIntegrate::RHO];
-    return {rmass ? rmass[i] : mass[type[i]], rho,
-            Sym3::load(&state[i][FixSPHIntegrate::SIGMA])};
-  }
 };
 
 }    // namespace
@@ -60,7 +51,8 @@ struct HostParticles {
 /* ---------------------------------------------------------------------- */
 
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
-    Pair(lmp), h(0.0), alpha(1.0), beta(1.0), integrator(nullptr)
+    Pair(lmp), h(0.0), alpha(1.0), beta(1.0), integrator(nullptr), particles(nullptr),
+    nmax_particles(0)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -69,6 +61,7 @@ PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
 
 PairSPHGranular::~PairSPHGranular()
 {
+  memory->sfree(particles);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -82,19 +75,24 @@ void PairSPHGranular::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
 
   FixSPHIntegrate &fix = *integrator;
-  double **x = atom->x;
   double **v = atom->v;
   double **f = atom->f;
   const int *mask = atom->mask;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const double dt = update->dt;
-
-  const HostParticles particles{x, v, fix.state, atom->rmass, atom->mass, atom->type, mask,
-                                list->firstneigh, list->numneigh, fix.groupbit, fix.wallbit,
-                                fix.material.E, h, alpha, beta, domain->dimension};
   const int inum = list->inum;
   const int *ilist = list->ilist;
 
   fix.forward_comm_state();
+  if (nall > nmax_particles) {
+    nmax_particles = atom->nmax;
+    memory->sfree(particles);
+    particles = (PairParticle *) memory->smalloc(sizeof(PairParticle) * nmax_particles,
+                                                 "pair:particles");
+  }
+  pack_particles(0, nall);
+  const HostParticles p{particles, list->firstneigh, list->numneigh, mask, fix.groupbit,
+                        fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), alpha, beta};
 
   if (fix.wallbit) {
     double g[3];
@@ -109,9 +107,11 @@ void PairSPHGranular::compute(int eflag, int vflag)
         g_minus_a[a] = g[a] - (update->setupflag ? 0.0 : (v[d][a] - v_last[a]) / dt);
         v_last[a] = v[d][a];
       }
-      GRANSPH::wall_stress(particles, d, g_minus_a).store(&fix.state[d][FixSPHIntegrate::SIGMA]);
+      particles[d].sigma = GRANSPH::wall_stress(p, d, g_minus_a);
+      particles[d].sigma.store(&fix.state[d][FixSPHIntegrate::SIGMA]);
     }
     fix.forward_comm_state();
+    pack_particles(nlocal, nall);
   }
 
   for (int ii = 0; ii < inum; ++ii) {
@@ -119,8 +119,8 @@ void PairSPHGranular::compute(int eflag, int vflag)
     double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     double *virp = vflag_either ? vir : nullptr;
     if (mask[i] & fix.groupbit) {
-      const GRANSPH::ParticleRates r = GRANSPH::granular_rates(particles, i, virp);
-      const double m = particles.view(i).mass;
+      const GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, virp);
+      const double m = particles[i].mass;
       for (int a = 0; a < 3; ++a) f[i][a] += m * r.acc[a] / force->ftm2v;
       double *rates = fix.rates[i];
       rates[FixSPHIntegrate::DRHO] = r.drho;
@@ -128,11 +128,26 @@ void PairSPHGranular::compute(int eflag, int vflag)
       r.spin.store(&rates[FixSPHIntegrate::SPIN]);
     } else if (mask[i] & fix.wallbit) {
       double fd[3];
-      GRANSPH::wall_force(particles, i, fd, virp);
+      GRANSPH::wall_force(p, i, fd, virp);
       for (int a = 0; a < 3; ++a) f[i][a] += fd[a] / force->ftm2v;
     } else
       continue;
     if (vflag_either) tally_virial(i, vir);
+  }
+}
+
+// the pair data of the granular and dummy particles among atoms [from, to)
+void PairSPHGranular::pack_particles(int from, int to)
+{
+  const FixSPHIntegrate &fix = *integrator;
+  const int sphbits = fix.groupbit | fix.wallbit;
+  const double E = fix.material.E;
+  for (int i = from; i < to; ++i) {
+    if (!(atom->mask[i] & sphbits)) continue;
+    const double m = atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
+    const double *state = fix.state[i];
+    particles[i] = PairParticle::make(atom->x[i], atom->v[i], m, state[FixSPHIntegrate::RHO],
+                                      Sym3::load(&state[FixSPHIntegrate::SIGMA]), E);
   }
 }
 

@@ -14,6 +14,10 @@ PairStyle(sph/granular,PairSPHGranular);
 
 #include "pair.h"
 
+namespace GRANSPH {
+struct PairParticle;
+}
+
 namespace LAMMPS_NS {
 
 class FixSPHIntegrate;
@@ -40,6 +44,12 @@ class PairSPHGranular : public Pair {
 
   void allocate();
   void tally_virial(int i, const double *vir);
+
+ private:
+  GRANSPH::PairParticle *particles;    // per atom, owned and ghost: what the pairs read
+  int nmax_particles;
+
+  void pack_particles(int from, int to);
 };
 
 }    // namespace LAMMPS_NS

@@ -21,13 +21,6 @@
 using namespace LAMMPS_NS;
 using FSI = FixSPHIntegrate;
 
-namespace {
-// Grains cost far more than dummy particles and often come first in memory, so
-// equal static chunks leave threads idle: hand out the particles dynamically.
-template <class DeviceType>
-using ParticlePolicy = Kokkos::RangePolicy<DeviceType, Kokkos::Schedule<Kokkos::Dynamic>>;
-}    // namespace
-
 template <class DeviceType>
 PairSPHGranularKokkos<DeviceType>::PairSPHGranularKokkos(LAMMPS *lmp) : PairSPHGranular(lmp)
 {
@@ -70,28 +63,25 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   FixSPHIntegrate &fix = *integrator;
   auto &kk = dynamic_cast<SPHStateKokkos &>(fix);
   auto k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
 
   fix.forward_comm_state();
   kk.k_state.template sync<DeviceType>();
   kk.k_rates.template sync<DeviceType>();
   kk.k_start.template sync<DeviceType>();
+  if ((int) d_particles.extent(0) < nall)
+    d_particles = decltype(d_particles)(
+        Kokkos::view_alloc(Kokkos::WithoutInitializing, "pair:particles"), atom->nmax);
+  pack_particles(kk, 0, nall);
 
   DeviceParticles<DeviceType> p;
-  p.pos = atomKK->k_x.template view<DeviceType>();
-  p.vel = atomKK->k_v.template view<DeviceType>();
-  p.mask = atomKK->k_mask.template view<DeviceType>();
-  p.type = atomKK->k_type.template view<DeviceType>();
-  p.rmass = atomKK->k_rmass.template view<DeviceType>();
-  p.mass = atomKK->k_mass.template view<DeviceType>();
-  p.state = kk.k_state.template view<DeviceType>();
+  p.particles = d_particles;
   p.neighbors = k_list->d_neighbors;
   p.numneigh = k_list->d_numneigh;
+  p.mask = atomKK->k_mask.template view<DeviceType>();
   p.granularbit = fix.groupbit;
   p.wallbit = fix.wallbit;
-  p.use_rmass = atom->rmass != nullptr;
-  p.dim = domain->dimension;
-  p.E = fix.material.E;
-  p.h = h;
+  p.kernel = GRANSPH::WendlandC2::make(h, domain->dimension);
   p.alpha = alpha;
   p.beta = beta;
 
@@ -100,6 +90,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
     kk.k_state.template modify<DeviceType>();
     kk.k_start.template modify<DeviceType>();
     fix.forward_comm_state();
+    pack_particles(kk, nlocal, nall);
   }
   rates_and_forces(p, kk);
   kk.k_rates.template modify<DeviceType>();
@@ -110,6 +101,35 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   }
 }
 
+// the pair data of the granular and dummy particles among atoms [from, to)
+template <class DeviceType>
+void PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int from, int to)
+{
+  if (from >= to) return;
+  auto particles = d_particles;
+  auto x = atomKK->k_x.template view<DeviceType>();
+  auto v = atomKK->k_v.template view<DeviceType>();
+  auto mask = atomKK->k_mask.template view<DeviceType>();
+  auto type = atomKK->k_type.template view<DeviceType>();
+  auto rmass = atomKK->k_rmass.template view<DeviceType>();
+  auto mass = atomKK->k_mass.template view<DeviceType>();
+  auto state = kk.k_state.template view<DeviceType>();
+  const int sphbits = integrator->groupbit | integrator->wallbit;
+  const int use_rmass = atom->rmass != nullptr;
+  const double E = integrator->material.E;
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<DeviceType>(from, to), LAMMPS_LAMBDA(const int i) {
+        if (!(mask(i) & sphbits)) return;
+        const double xi[3] = {x(i, 0), x(i, 1), x(i, 2)};
+        const double vi[3] = {v(i, 0), v(i, 1), v(i, 2)};
+        const GRANSPH::Sym3 sigma{state(i, FSI::SIGMA),     state(i, FSI::SIGMA + 1),
+                                  state(i, FSI::SIGMA + 2), state(i, FSI::SIGMA + 3),
+                                  state(i, FSI::SIGMA + 4), state(i, FSI::SIGMA + 5)};
+        particles(i) = GRANSPH::PairParticle::make(xi, vi, use_rmass ? rmass(i) : mass(type(i)),
+                                                   state(i, FSI::RHO), sigma, E);
+      });
+}
+
 // dummy-particle stresses, eq. 8, with the wall acceleration from the velocity
 // change since the last evaluation
 template <class DeviceType>
@@ -117,6 +137,8 @@ void PairSPHGranularKokkos<DeviceType>::wall_stresses(const DeviceParticles<Devi
                                                       SPHStateKokkos &kk)
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
+  auto particles = d_particles;
+  auto state = kk.k_state.template view<DeviceType>();
   auto start = kk.k_start.template view<DeviceType>();
   double g[3];
   integrator->gravity_vector(g);
@@ -129,10 +151,11 @@ void PairSPHGranularKokkos<DeviceType>::wall_stresses(const DeviceParticles<Devi
         const double gd[3] = {gx, gy, gz};
         double g_minus_a[3];
         for (int a = 0; a < 3; ++a) {
-          g_minus_a[a] = gd[a] - (p.v(d, a) - start(d, FSI::WALL_V + a)) * inv_dt;
-          start(d, FSI::WALL_V + a) = p.v(d, a);
+          g_minus_a[a] = gd[a] - (particles(d).v[a] - start(d, FSI::WALL_V + a)) * inv_dt;
+          start(d, FSI::WALL_V + a) = particles(d).v[a];
         }
-        GRANSPH::wall_stress(p, d, g_minus_a).store(&p.state(d, FSI::SIGMA));
+        particles(d).sigma = GRANSPH::wall_stress(p, d, g_minus_a);
+        particles(d).sigma.store(&state(d, FSI::SIGMA));
       });
 }
 
@@ -156,7 +179,7 @@ void PairSPHGranularKokkos<DeviceType>::rates_and_forces(const DeviceParticles<D
         double *virp = want_virial ? vir : nullptr;
         if (p.granular(i)) {
           const GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, virp);
-          const double m = p.mass_of(i);
+          const double m = p.particle(i).mass;
           for (int a = 0; a < 3; ++a) f(i, a) += m * r.acc[a] / ftm2v;
           rates(i, FSI::DRHO) = r.drho;
           r.strain.store(&rates(i, FSI::STRAIN));

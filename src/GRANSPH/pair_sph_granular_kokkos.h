@@ -32,11 +32,13 @@ template <class DeviceType> class PairSPHGranularKokkos : public PairSPHGranular
   void init_style() override;
 
   // device kernels (public: CUDA lambdas may not live in private members)
+  void pack_particles(SPHStateKokkos &kk, int from, int to);
   void wall_stresses(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
   void rates_and_forces(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
 
  private:
   DAT::tdual_virial_array k_vatom;
+  Kokkos::View<GRANSPH::PairParticle *, DeviceType> d_particles;    // owned and ghost atoms
 };
 
 }    // namespace LAMMPS_NS
