@@ -145,10 +145,10 @@ TEST(PairTerms, RigidRotationHasSpinButNoStrainRate)
   const double L[3][3] = {{0.0, -omega, 0.0}, {omega, 0.0, 0.0}, {0.0, 0.0, 0.0}};
   const Lattice lat;
   const ParticleRates r = lat.rates(L);
-  EXPECT_NEAR(r.spin.xy, -omega * lat.gradient_consistency(), 1e-12 * omega);
-  EXPECT_NEAR(r.spin.xz, 0.0, 1e-12);
-  EXPECT_NEAR(r.spin.yz, 0.0, 1e-12);
-  for (double d : {r.strain.xx, r.strain.yy, r.strain.zz, r.strain.xy, r.strain.xz, r.strain.yz})
+  EXPECT_NEAR(r.spin().xy, -omega * lat.gradient_consistency(), 1e-12 * omega);
+  EXPECT_NEAR(r.spin().xz, 0.0, 1e-12);
+  EXPECT_NEAR(r.spin().yz, 0.0, 1e-12);
+  for (double d : {r.strain().xx, r.strain().yy, r.strain().zz, r.strain().xy, r.strain().xz, r.strain().yz})
     EXPECT_NEAR(d, 0.0, 1e-12);
   EXPECT_NEAR(r.drho, 0.0, 1e-9);
 }
@@ -160,9 +160,9 @@ TEST(PairTerms, UniformCompressionRaisesDensity)
   const Lattice lat;
   const ParticleRates r = lat.rates(L);
   const double k = lat.gradient_consistency();
-  EXPECT_NEAR(r.strain.xx, rate * k, 1e-12);
-  EXPECT_NEAR(r.strain.zz, rate * k, 1e-12);
-  EXPECT_NEAR(r.strain.xy, 0.0, 1e-12);
+  EXPECT_NEAR(r.strain().xx, rate * k, 1e-12);
+  EXPECT_NEAR(r.strain().zz, rate * k, 1e-12);
+  EXPECT_NEAR(r.strain().xy, 0.0, 1e-12);
   // continuity: drho/dt = -rho div v
   EXPECT_NEAR(r.drho, -lat.rho * 3.0 * rate * k, 1e-9 * lat.rho);
 }

@@ -37,15 +37,15 @@ struct alignas(64) PairParticle {
 
 // Monaghan artificial viscosity Pi_ij, eq. 7, with phi = 0.1 h in the denominator.
 // dx = x_i - x_j, dv = v_i - v_j. Acts only between approaching particles (v.x < 0):
-// clamping v.x to <= 0 gives Pi = 0 for the others without a branch, which the
-// neighbour loops cannot predict. (-alpha c_ij phi_ij + beta phi_ij^2) / rho_ij with
+// min(v.x, 0) = (v.x - |v.x|) / 2, exact and without a branch (which the neighbour
+// loops could not predict), gives Pi = 0 for the others. (-alpha c_ij phi_ij + beta phi_ij^2) / rho_ij with
 // phi_ij = h v.x / d, d = r^2 + 0.01 h^2, is taken over one denominator.
 KOKKOS_INLINE_FUNCTION double monaghan_viscosity(const double *dx, const double *dv, double rsq,
                                                  double h, double alpha, double beta,
                                                  const PairParticle &pi, const PairParticle &pj)
 {
   const double vdotx = dv[0] * dx[0] + dv[1] * dx[1] + dv[2] * dx[2];
-  const double hv = h * fmin(vdotx, 0.0);
+  const double hv = h * 0.5 * (vdotx - fabs(vdotx));
   const double d = rsq + 0.01 * h * h;
   const double c_ij = 0.5 * (pi.c + pj.c);
   const double rho_ij = 0.5 * (pi.rho + pj.rho);
@@ -66,14 +66,28 @@ KOKKOS_INLINE_FUNCTION void momentum_term(const PairParticle &pi, const PairPart
 
 // Rates of a granular particle accumulated over its neighbours.
 struct ParticleRates {
-  double drho;      // eq. 6a
-  double acc[3];    // eq. 6b
-  Sym3 strain;      // eq. 34
-  Spin3 spin;       // eq. 35
+  double drho;            // eq. 6a
+  double acc[3];          // eq. 6b
+  double grad_v[3][3];    // velocity gradient dv_a/dx_b, sum_j m_j/rho_j v_ji (x) grad_i W_ij
 
   KOKKOS_INLINE_FUNCTION static ParticleRates zero()
   {
-    return {0.0, {0.0, 0.0, 0.0}, Sym3::zero(), Spin3::zero()};
+    return {0.0, {0.0, 0.0, 0.0}, {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}};
+  }
+
+  // strain-rate tensor, eq. 34: the symmetric part of grad_v
+  KOKKOS_INLINE_FUNCTION Sym3 strain() const
+  {
+    const double(&l)[3][3] = grad_v;
+    return {l[0][0], l[1][1], l[2][2], 0.5 * (l[0][1] + l[1][0]), 0.5 * (l[0][2] + l[2][0]),
+            0.5 * (l[1][2] + l[2][1])};
+  }
+
+  // spin tensor, eq. 35: the antisymmetric part of grad_v
+  KOKKOS_INLINE_FUNCTION Spin3 spin() const
+  {
+    const double(&l)[3][3] = grad_v;
+    return {0.5 * (l[0][1] - l[1][0]), 0.5 * (l[0][2] - l[2][0]), 0.5 * (l[1][2] - l[2][1])};
   }
 };
 
@@ -85,18 +99,10 @@ KOKKOS_INLINE_FUNCTION void add_neighbour(ParticleRates &r, const PairParticle &
 {
   r.drho += pj.mass * (dv[0] * gradw[0] + dv[1] * gradw[1] + dv[2] * gradw[2]);
   momentum_term(pi, pj, visc, gradw, r.acc);
-
-  // v_ji = -dv; eqs. 34-35 carry 1/2 m_j/rho_j
-  const double s = -0.5 * pj.mass * pj.inv_rho;
-  r.strain.xx += s * 2.0 * dv[0] * gradw[0];
-  r.strain.yy += s * 2.0 * dv[1] * gradw[1];
-  r.strain.zz += s * 2.0 * dv[2] * gradw[2];
-  r.strain.xy += s * (dv[0] * gradw[1] + dv[1] * gradw[0]);
-  r.strain.xz += s * (dv[0] * gradw[2] + dv[2] * gradw[0]);
-  r.strain.yz += s * (dv[1] * gradw[2] + dv[2] * gradw[1]);
-  r.spin.xy += s * (dv[0] * gradw[1] - dv[1] * gradw[0]);
-  r.spin.xz += s * (dv[0] * gradw[2] - dv[2] * gradw[0]);
-  r.spin.yz += s * (dv[1] * gradw[2] - dv[2] * gradw[1]);
+  // v_ji = -dv, weighted by the volume m_j/rho_j
+  const double s = -pj.mass * pj.inv_rho;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) r.grad_v[a][b] += s * dv[a] * gradw[b];
 }
 
 // Dummy-particle stress, eq. 8 (Adami et al. 2012 generalised to a tensor):

@@ -124,8 +124,8 @@ void PairSPHGranular::compute(int eflag, int vflag)
       for (int a = 0; a < 3; ++a) f[i][a] += m * r.acc[a] / force->ftm2v;
       double *rates = fix.rates[i];
       rates[FixSPHIntegrate::DRHO] = r.drho;
-      r.strain.store(&rates[FixSPHIntegrate::STRAIN]);
-      r.spin.store(&rates[FixSPHIntegrate::SPIN]);
+      r.strain().store(&rates[FixSPHIntegrate::STRAIN]);
+      r.spin().store(&rates[FixSPHIntegrate::SPIN]);
     } else if (mask[i] & fix.wallbit) {
       double fd[3];
       GRANSPH::wall_force(p, i, fd, virp);

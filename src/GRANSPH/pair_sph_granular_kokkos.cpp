@@ -182,8 +182,8 @@ void PairSPHGranularKokkos<DeviceType>::rates_and_forces(const DeviceParticles<D
           const double m = p.particle(i).mass;
           for (int a = 0; a < 3; ++a) f(i, a) += m * r.acc[a] / ftm2v;
           rates(i, FSI::DRHO) = r.drho;
-          r.strain.store(&rates(i, FSI::STRAIN));
-          r.spin.store(&rates(i, FSI::SPIN));
+          r.strain().store(&rates(i, FSI::STRAIN));
+          r.spin().store(&rates(i, FSI::SPIN));
         } else if (p.wall(i)) {
           double fd[3];
           GRANSPH::wall_force(p, i, fd, virp);
