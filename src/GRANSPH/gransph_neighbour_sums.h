@@ -78,9 +78,8 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
   return r;
 }
 
-// Stress of dummy particle d extrapolated from its granular neighbours (eq. 8).
-template <class Particles>
-KOKKOS_INLINE_FUNCTION Sym3 wall_stress(const Particles &p, int d, const double *g_minus_a)
+// The sums of eq. 8 for dummy particle d over its granular neighbours.
+template <class Particles> KOKKOS_INLINE_FUNCTION WallSums wall_sums(const Particles &p, int d)
 {
   WallSums sums = WallSums::zero();
   const PairParticle pd = p.particle(d);
@@ -94,7 +93,7 @@ KOKKOS_INLINE_FUNCTION Sym3 wall_stress(const Particles &p, int d, const double 
     if (rsq >= p.kernel.cutsq()) continue;
     sums.add(pk.sigma, pk.rho, r_dk, p.kernel.w(rsq));
   }
-  return sums.stress(g_minus_a);
+  return sums;
 }
 
 // Force of the granular neighbours on dummy particle d (eq. 9); vir as above.

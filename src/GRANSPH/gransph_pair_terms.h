@@ -115,6 +115,9 @@ struct WallSums {
 
   KOKKOS_INLINE_FUNCTION static WallSums zero() { return {Sym3::zero(), {0.0, 0.0, 0.0}, 0.0}; }
 
+  // whether any granular particle lies inside the support (W > 0 there)
+  KOKKOS_INLINE_FUNCTION bool has_neighbours() const { return w > 0.0; }
+
   KOKKOS_INLINE_FUNCTION void add(const Sym3 &sigma_k, double rho_k, const double *r_dk, double wdk)
   {
     sigma_w = sigma_w + wdk * sigma_k;

@@ -2,10 +2,10 @@
    GRANSPH: pair_style sph/granular.
 
    Per evaluation: ghosts get fresh density and stress; owned dummy particles
-   get their stress by extrapolation (eq. 8) and pass it to their ghosts; then
-   every owned granular particle sums its rates (eqs. 6, 7, 34, 35) and every
-   owned dummy particle the force the grains exert on it (eq. 9). The full
-   neighbour list lets each particle write only to itself.
+   get their stress by extrapolation (eq. 8), and with it the force the grains
+   exert on them (eq. 9), and pass the stress to their ghosts; then every owned
+   granular particle sums its rates (eqs. 6, 7, 34, 35). The full neighbour
+   list lets each particle write only to itself.
 ------------------------------------------------------------------------- */
 
 #include "pair_sph_granular.h"
@@ -107,8 +107,17 @@ void PairSPHGranular::compute(int eflag, int vflag)
         g_minus_a[a] = g[a] - (update->setupflag ? 0.0 : (v[d][a] - v_last[a]) / dt);
         v_last[a] = v[d][a];
       }
-      particles[d].sigma = GRANSPH::wall_stress(p, d, g_minus_a);
+      const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
+      particles[d].sigma = sums.stress(g_minus_a);
       particles[d].sigma.store(&fix.state[d][FixSPHIntegrate::SIGMA]);
+      // the grains' force on d (eq. 9) needs its own new stress only, not that of
+      // other walls; without grains inside the support it is zero
+      if (!sums.has_neighbours()) continue;
+      double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+      double fd[3];
+      GRANSPH::wall_force(p, d, fd, vflag_either ? vir : nullptr);
+      for (int a = 0; a < 3; ++a) f[d][a] += fd[a] / force->ftm2v;
+      if (vflag_either) tally_virial(d, vir);
     }
     fix.forward_comm_state();
     pack_particles(nlocal, nall);
@@ -116,22 +125,15 @@ void PairSPHGranular::compute(int eflag, int vflag)
 
   for (int ii = 0; ii < inum; ++ii) {
     const int i = ilist[ii];
+    if (!(mask[i] & fix.groupbit)) continue;
     double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    double *virp = vflag_either ? vir : nullptr;
-    if (mask[i] & fix.groupbit) {
-      const GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, virp);
-      const double m = particles[i].mass;
-      for (int a = 0; a < 3; ++a) f[i][a] += m * r.acc[a] / force->ftm2v;
-      double *rates = fix.rates[i];
-      rates[FixSPHIntegrate::DRHO] = r.drho;
-      r.strain().store(&rates[FixSPHIntegrate::STRAIN]);
-      r.spin().store(&rates[FixSPHIntegrate::SPIN]);
-    } else if (mask[i] & fix.wallbit) {
-      double fd[3];
-      GRANSPH::wall_force(p, i, fd, virp);
-      for (int a = 0; a < 3; ++a) f[i][a] += fd[a] / force->ftm2v;
-    } else
-      continue;
+    const GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, vflag_either ? vir : nullptr);
+    const double m = particles[i].mass;
+    for (int a = 0; a < 3; ++a) f[i][a] += m * r.acc[a] / force->ftm2v;
+    double *rates = fix.rates[i];
+    rates[FixSPHIntegrate::DRHO] = r.drho;
+    r.strain().store(&rates[FixSPHIntegrate::STRAIN]);
+    r.spin().store(&rates[FixSPHIntegrate::SPIN]);
     if (vflag_either) tally_virial(i, vir);
   }
 }

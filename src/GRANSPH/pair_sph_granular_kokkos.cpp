@@ -86,13 +86,13 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   p.beta = beta;
 
   if (fix.wallbit) {
-    wall_stresses(p, kk);
+    walls(p, kk);
     kk.k_state.template modify<DeviceType>();
     kk.k_start.template modify<DeviceType>();
     fix.forward_comm_state();
     pack_particles(kk, nlocal, nall);
   }
-  rates_and_forces(p, kk);
+  grains(p, kk);
   kk.k_rates.template modify<DeviceType>();
   atomKK->modified(execution_space, datamask_modify);
   if (vflag_atom) {
@@ -130,22 +130,29 @@ void PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int f
       });
 }
 
-// dummy-particle stresses, eq. 8, with the wall acceleration from the velocity
-// change since the last evaluation
+// dummy-particle stresses (eq. 8), with the wall acceleration from the velocity
+// change since the last evaluation, and the grains' forces on them (eq. 9), which
+// need a wall's own new stress only
 template <class DeviceType>
-void PairSPHGranularKokkos<DeviceType>::wall_stresses(const DeviceParticles<DeviceType> &p,
-                                                      SPHStateKokkos &kk)
+void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> &p,
+                                              SPHStateKokkos &kk)
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
   auto particles = d_particles;
   auto state = kk.k_state.template view<DeviceType>();
   auto start = kk.k_start.template view<DeviceType>();
+  auto f = atomKK->k_f.template view<DeviceType>();
+  auto vatom = k_vatom.template view<DeviceType>();
+  const int want_virial = vflag_either, want_vatom = vflag_atom;
+  const double ftm2v = force->ftm2v;
   double g[3];
   integrator->gravity_vector(g);
   const double gx = g[0], gy = g[1], gz = g[2];
   const double inv_dt = update->setupflag ? 0.0 : 1.0 / update->dt;
-  Kokkos::parallel_for(
-      ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)), LAMMPS_LAMBDA(const int ii) {
+  EV_FLOAT ev;
+  Kokkos::parallel_reduce(
+      ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
+      LAMMPS_LAMBDA(const int ii, EV_FLOAT &sum) {
         const int d = ilist(ii);
         if (!p.wall(d)) return;
         const double gd[3] = {gx, gy, gz};
@@ -154,15 +161,27 @@ void PairSPHGranularKokkos<DeviceType>::wall_stresses(const DeviceParticles<Devi
           g_minus_a[a] = gd[a] - (particles(d).v[a] - start(d, FSI::WALL_V + a)) * inv_dt;
           start(d, FSI::WALL_V + a) = particles(d).v[a];
         }
-        particles(d).sigma = GRANSPH::wall_stress(p, d, g_minus_a);
+        const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
+        particles(d).sigma = sums.stress(g_minus_a);
         particles(d).sigma.store(&state(d, FSI::SIGMA));
-      });
+        if (!sums.has_neighbours()) return;
+        double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        double fd[3];
+        GRANSPH::wall_force(p, d, fd, want_virial ? vir : nullptr);
+        for (int a = 0; a < 3; ++a) f(d, a) += fd[a] / ftm2v;
+        for (int k = 0; k < 6; ++k) sum.v[k] += vir[k];
+        if (want_vatom)
+          for (int k = 0; k < 6; ++k) vatom(d, k) += vir[k];
+      },
+      ev);
+  if (vflag_global)
+    for (int k = 0; k < 6; ++k) virial[k] += ev.v[k];
 }
 
-// rates of the granular particles (eqs. 6, 7, 34, 35) and forces on the walls (eq. 9)
+// rates of the granular particles (eqs. 6, 7, 34, 35)
 template <class DeviceType>
-void PairSPHGranularKokkos<DeviceType>::rates_and_forces(const DeviceParticles<DeviceType> &p,
-                                                         SPHStateKokkos &kk)
+void PairSPHGranularKokkos<DeviceType>::grains(const DeviceParticles<DeviceType> &p,
+                                               SPHStateKokkos &kk)
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
   auto rates = kk.k_rates.template view<DeviceType>();
@@ -175,21 +194,15 @@ void PairSPHGranularKokkos<DeviceType>::rates_and_forces(const DeviceParticles<D
       ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
       LAMMPS_LAMBDA(const int ii, EV_FLOAT &sum) {
         const int i = ilist(ii);
+        if (!p.granular(i)) return;
         double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-        double *virp = want_virial ? vir : nullptr;
-        if (p.granular(i)) {
-          const GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, virp);
-          const double m = p.particle(i).mass;
-          for (int a = 0; a < 3; ++a) f(i, a) += m * r.acc[a] / ftm2v;
-          rates(i, FSI::DRHO) = r.drho;
-          r.strain().store(&rates(i, FSI::STRAIN));
-          r.spin().store(&rates(i, FSI::SPIN));
-        } else if (p.wall(i)) {
-          double fd[3];
-          GRANSPH::wall_force(p, i, fd, virp);
-          for (int a = 0; a < 3; ++a) f(i, a) += fd[a] / ftm2v;
-        } else
-          return;
+        const GRANSPH::ParticleRates r =
+            GRANSPH::granular_rates(p, i, want_virial ? vir : nullptr);
+        const double m = p.particle(i).mass;
+        for (int a = 0; a < 3; ++a) f(i, a) += m * r.acc[a] / ftm2v;
+        rates(i, FSI::DRHO) = r.drho;
+        r.strain().store(&rates(i, FSI::STRAIN));
+        r.spin().store(&rates(i, FSI::SPIN));
         for (int k = 0; k < 6; ++k) sum.v[k] += vir[k];
         if (want_vatom)
           for (int k = 0; k < 6; ++k) vatom(i, k) += vir[k];

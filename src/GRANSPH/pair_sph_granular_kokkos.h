@@ -33,8 +33,8 @@ template <class DeviceType> class PairSPHGranularKokkos : public PairSPHGranular
 
   // device kernels (public: CUDA lambdas may not live in private members)
   void pack_particles(SPHStateKokkos &kk, int from, int to);
-  void wall_stresses(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
-  void rates_and_forces(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
+  void walls(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
+  void grains(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
 
  private:
   DAT::tdual_virial_array k_vatom;
