@@ -53,9 +53,12 @@ def run_once(script, ranks, args, dx, steps):
     return int(natoms), grains, int(nsteps) * int(natoms) / float(seconds)
 
 
-def throughput(script, ranks, args, dx, steps, repeat):
-    runs = [run_once(script, ranks, args, dx, steps) for _ in range(repeat)]
-    return runs[0][0], runs[0][1], max(rate for *_, rate in runs)
+def throughputs(dx, steps, repeat):
+    """(atoms, grains, best rate) of every run in RUNS; the repeats go round all runs
+    in turn, so that a slow phase of the machine does not fall on one run only"""
+    rounds = [[run_once(script, ranks, args, dx, steps) for _, script, ranks, args in RUNS]
+              for _ in range(repeat)]
+    return [(runs[0][0], runs[0][1], max(rate for *_, rate in runs)) for runs in zip(*rounds)]
 
 
 def main():
@@ -68,8 +71,7 @@ def main():
           " ".join(f"{name:>19s}" for name, *_ in RUNS) + " " +
           " ".join(f"{name:>15s}" for name, *_ in RATIOS))
     for dx, steps in sizes:
-        results = [throughput(script, ranks, args, dx, steps, opts.repeat)
-                   for _, script, ranks, args in RUNS]
+        results = throughputs(dx, steps, opts.repeat)
         natoms, grains = results[0][0], results[0][1]
         if any(r[0] != natoms for r in results):
             sys.exit(f"dx {dx}: the runs have different particle counts: {results}")
