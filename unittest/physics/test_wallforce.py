@@ -5,7 +5,6 @@ input stops with an error that names the problem."""
 
 import os
 import re
-import subprocess
 import tempfile
 
 import gransph_run
@@ -97,23 +96,12 @@ compute w all sph/wallforce 0 1 1
 """
 
 
-def first_error(tmp, text):
-    """return code and first ERROR line ('' if none) of an input"""
-    path = os.path.join(tmp, "in.case")
-    with open(path, "w") as f:
-        f.write(text)
-    proc = subprocess.run([gransph_run.LMP, "-in", path, "-log", "none", "-echo", "none"],
-                          cwd=tmp, capture_output=True, text=True, timeout=120)
-    errors = [l for l in (proc.stdout + proc.stderr).splitlines() if "ERROR" in l]
-    return proc.returncode, errors[0] if errors else ""
-
-
 with tempfile.TemporaryDirectory() as tmp:
-    code, error = first_error(tmp, BASE.format(**GOOD))
+    code, error = gransph_run.first_error(tmp, BASE.format(**GOOD))
     check("good input runs", code == 0 and not error, error or "no error")
     cases = [(BASE.format(**{**GOOD, **fields}), name, expected) for name, fields, expected in CASES]
     for text, name, expected in cases + [(BASE_2D, "nz != 0 in 2d", "nz = 0 for a 2d simulation")]:
-        code, error = first_error(tmp, text)
+        code, error = gransph_run.first_error(tmp, text)
         check(name, code != 0 and re.search(expected, error), error or "no error")
 
 check.finish()
