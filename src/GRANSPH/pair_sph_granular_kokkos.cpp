@@ -21,6 +21,18 @@
 using namespace LAMMPS_NS;
 using FSI = FixSPHIntegrate;
 
+namespace {
+// the virial of particle i into the reduction and, if wanted, into its per-atom entry
+template <class VirialView>
+KOKKOS_INLINE_FUNCTION void add_virial(EV_FLOAT &sum, const VirialView &vatom, bool want_vatom,
+                                       int i, const double *vir)
+{
+  for (int k = 0; k < 6; ++k) sum.v[k] += vir[k];
+  if (want_vatom)
+    for (int k = 0; k < 6; ++k) vatom(i, k) += vir[k];
+}
+}    // namespace
+
 template <class DeviceType>
 PairSPHGranularKokkos<DeviceType>::PairSPHGranularKokkos(LAMMPS *lmp) : PairSPHGranular(lmp)
 {
@@ -169,9 +181,7 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
         double fd[3];
         GRANSPH::wall_force(p, d, fd, want_virial ? vir : nullptr);
         for (int a = 0; a < 3; ++a) f(d, a) += fd[a] / ftm2v;
-        for (int k = 0; k < 6; ++k) sum.v[k] += vir[k];
-        if (want_vatom)
-          for (int k = 0; k < 6; ++k) vatom(d, k) += vir[k];
+        add_virial(sum, vatom, want_vatom, d, vir);
       },
       ev);
   if (vflag_global)
@@ -203,9 +213,7 @@ void PairSPHGranularKokkos<DeviceType>::grains(const DeviceParticles<DeviceType>
         rates(i, FSI::DRHO) = r.drho;
         r.strain().store(&rates(i, FSI::STRAIN));
         r.spin().store(&rates(i, FSI::SPIN));
-        for (int k = 0; k < 6; ++k) sum.v[k] += vir[k];
-        if (want_vatom)
-          for (int k = 0; k < 6; ++k) vatom(i, k) += vir[k];
+        add_virial(sum, vatom, want_vatom, i, vir);
       },
       ev);
   if (vflag_global)
