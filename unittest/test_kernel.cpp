@@ -105,7 +105,7 @@ struct Lattice {
       const double gradw[3] = {fw * dx_ij[0], fw * dx_ij[1], fw * dx_ij[2]};
       double dv[3];
       for (int a = 0; a < 3; ++a) dv[a] = -(L[a][0] * xj[0] + L[a][1] * xj[1] + L[a][2] * xj[2]);
-      add_neighbour(r, p, p, dv, gradw, 0.0);
+      r.add(PairTerms::make(p, p, dv, gradw, 0.0), p, 1.0);
     });
     return r;
   }
@@ -177,24 +177,56 @@ TEST(PairTerms, ViscosityOnlyBetweenApproachingParticles)
   EXPECT_EQ(monaghan_viscosity(dx, separate, 1e-4, 0.012, 1.0, 1.0, p, p), 0.0);
 }
 
-TEST(PairTerms, PressureAndViscosityRepelAndConserveMomentum)
-{
-  // two particles under pressure p: i is pushed away from j, and f_ij = -f_ji
+namespace {
+// two particles under pressure, approaching: i at x_ij from j
+struct TwoParticles {
   const PairParticle pi = particle(0.5, 1000.0, Sym3::iso(-2.0e4));
-  const PairParticle pj = particle(0.7, 1100.0, Sym3::iso(-1.0e4));
+  const PairParticle pj = particle(0.7, 1100.0, {-1.0e4, -1.2e4, -0.9e4, 300.0, -200.0, 100.0});
   const double h = 0.012;
   const double xij[3] = {0.01, 0.002, -0.003};
   const double vij[3] = {-0.4, 0.1, 0.0};
-  const double rsq = xij[0] * xij[0] + xij[1] * xij[1] + xij[2] * xij[2];
-  const double fw = WendlandC2::make(h, 3).grad_factor(rsq);
-  const double gi[3] = {fw * xij[0], fw * xij[1], fw * xij[2]};
-  const double gj[3] = {-gi[0], -gi[1], -gi[2]};
-  const double visc = monaghan_viscosity(xij, vij, rsq, h, 1.0, 1.0, pi, pj);
-  double ai[3] = {0.0, 0.0, 0.0}, aj[3] = {0.0, 0.0, 0.0};
-  momentum_term(pi, pj, visc, gi, ai);
-  momentum_term(pj, pi, visc, gj, aj);
-  EXPECT_GT(ai[0] * xij[0] + ai[1] * xij[1] + ai[2] * xij[2], 0.0);
-  for (int a = 0; a < 3; ++a) EXPECT_NEAR(pi.mass * ai[a], -pj.mass * aj[a], 1e-12 * std::fabs(pi.mass * ai[a]));
+
+  // the pair seen from i (from = +1) or from j (from = -1)
+  PairTerms terms(double from) const
+  {
+    const double x[3] = {from * xij[0], from * xij[1], from * xij[2]};
+    const double v[3] = {from * vij[0], from * vij[1], from * vij[2]};
+    const double rsq = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+    const double fw = WendlandC2::make(h, 3).grad_factor(rsq);
+    const double g[3] = {fw * x[0], fw * x[1], fw * x[2]};
+    const PairParticle &self = from > 0 ? pi : pj, &other = from > 0 ? pj : pi;
+    return PairTerms::make(self, other, v, g, monaghan_viscosity(x, v, rsq, h, 1.0, 1.0, self, other));
+  }
+};
+}    // namespace
+
+TEST(PairTerms, PressureAndViscosityRepelAndConserveMomentum)
+{
+  const TwoParticles two;
+  const PairTerms t = two.terms(1.0);
+  ParticleRates ri = ParticleRates::zero(), rj = ParticleRates::zero();
+  ri.add(t, two.pj, 1.0);
+  rj.add(t, two.pi, -1.0);
+  EXPECT_GT(ri.acc[0] * two.xij[0] + ri.acc[1] * two.xij[1] + ri.acc[2] * two.xij[2], 0.0);
+  for (int a = 0; a < 3; ++a)
+    EXPECT_NEAR(two.pi.mass * ri.acc[a], -two.pj.mass * rj.acc[a], 1e-12 * std::fabs(two.pi.mass * ri.acc[a]));
+}
+
+// A half neighbour list adds each pair's terms to j with side -1: the same rates as
+// j's own view of the pair, which a full list uses.
+TEST(PairTerms, OnePairServesBothParticles)
+{
+  const TwoParticles two;
+  ParticleRates from_pair = ParticleRates::zero(), own = ParticleRates::zero();
+  from_pair.add(two.terms(1.0), two.pi, -1.0);
+  own.add(two.terms(-1.0), two.pi, 1.0);
+  EXPECT_NEAR(from_pair.drho, own.drho, 1e-12 * std::fabs(own.drho));
+  EXPECT_NE(own.drho, 0.0);
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_NEAR(from_pair.acc[a], own.acc[a], 1e-12 * std::fabs(own.acc[a]));
+    for (int b = 0; b < 3; ++b)
+      EXPECT_NEAR(from_pair.grad_v[a][b], own.grad_v[a][b], 1e-12 * std::fabs(own.grad_v[a][b]));
+  }
 }
 
 TEST(WallSums, HydrostaticExtrapolationBelowGrains)

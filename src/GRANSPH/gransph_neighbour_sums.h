@@ -1,13 +1,17 @@
 /* -*- c++ -*- ----------------------------------------------------------
-   GRANSPH: the per-particle neighbour sums of sph/granular, written once for
-   the plain and the Kokkos pair styles. `Particles` is an accessor with
+   GRANSPH: the neighbour sums of sph/granular, written once for the plain and
+   the Kokkos pair styles, over the pair terms of gransph_pair_terms.h.
+   `Particles` is an accessor with
 
-     int    num_neighbours(int i), neighbour(int i, int k)  (full list, masked)
+     int    num_neighbours(int i), neighbour(int i, int k)  (masked)
      const GRANSPH::PairParticle &particle(int i)
      bool   granular(int i), wall(int i)
      GRANSPH::WendlandC2 kernel; double alpha, beta   (Monaghan viscosity)
 
-   All loops run over one particle i and write only to i (full neighbour list).
+   Over a full neighbour list (the Kokkos styles: no atomics) each loop runs
+   over one particle i and writes only to i. Over a half list with newton off
+   (the plain style: each pair once, a pair with a ghost on both ranks) a loop
+   adds each pair to both particles, to j only if j is owned.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_NEIGHBOUR_SUMS_H
@@ -67,13 +71,13 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     const PairParticle &pj = p.particle(j);
     PairGeometry g;
     if (!pair_geometry(p, pi, pj, g)) continue;
+    const PairTerms t = PairTerms::make(pi, pj, g.dv, g.gradw, g.visc);
+    r.add(t, pj, 1.0);
     if (vir) {
-      double acc[3] = {0.0, 0.0, 0.0};
-      momentum_term(pi, pj, g.visc, g.gradw, acc);
-      const double fij[3] = {pi.mass * acc[0], pi.mass * acc[1], pi.mass * acc[2]};
+      const double mm = pi.mass * pj.mass;
+      const double fij[3] = {mm * t.tg[0], mm * t.tg[1], mm * t.tg[2]};
       add_pair_virial(vir, g.dx, fij);
     }
-    add_neighbour(r, pi, pj, g.dv, g.gradw, g.visc);
   }
   return r;
 }
@@ -101,7 +105,7 @@ template <class Particles>
 KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force, double *vir)
 {
   const PairParticle pd = p.particle(d);
-  double acc[3] = {0.0, 0.0, 0.0};
+  for (int a = 0; a < 3; ++a) force[a] = 0.0;
   const int n = p.num_neighbours(d);
   for (int k = 0; k < n; ++k) {
     const int j = p.neighbour(d, k);
@@ -109,15 +113,72 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
     const PairParticle &pj = p.particle(j);
     PairGeometry g;
     if (!pair_geometry(p, pd, pj, g)) continue;
-    double accj[3] = {0.0, 0.0, 0.0};
-    momentum_term(pd, pj, g.visc, g.gradw, accj);
-    for (int a = 0; a < 3; ++a) acc[a] += accj[a];
-    if (vir) {
-      const double fij[3] = {pd.mass * accj[0], pd.mass * accj[1], pd.mass * accj[2]};
-      add_pair_virial(vir, g.dx, fij);
+    double tg[3];
+    stress_gradient(pd, pj, g.visc, g.gradw, tg);
+    const double mm = pd.mass * pj.mass;
+    const double fdj[3] = {mm * tg[0], mm * tg[1], mm * tg[2]};
+    for (int a = 0; a < 3; ++a) force[a] += fdj[a];
+    if (vir) add_pair_virial(vir, g.dx, fdj);
+  }
+}
+
+// Half list: the pairs of particle i added to the sums of eq. 8 (WallSums, indexed by
+// atom) of the dummy particles among i and its owned neighbours.
+template <class Particles, class SumsArray>
+KOKKOS_INLINE_FUNCTION void add_wall_sums(const Particles &p, int i, int nlocal,
+                                          const SumsArray &sums)
+{
+  const bool i_wall = p.wall(i);
+  if (!i_wall && !p.granular(i)) return;
+  const PairParticle pi = p.particle(i);
+  const int n = p.num_neighbours(i);
+  for (int k = 0; k < n; ++k) {
+    const int j = p.neighbour(i, k);
+    if (i_wall ? !p.granular(j) : !(p.wall(j) && j < nlocal)) continue;
+    const PairParticle &pj = p.particle(j);
+    const double r_ij[3] = {pi.x[0] - pj.x[0], pi.x[1] - pj.x[1], pi.x[2] - pj.x[2]};
+    const double rsq = r_ij[0] * r_ij[0] + r_ij[1] * r_ij[1] + r_ij[2] * r_ij[2];
+    if (rsq >= p.kernel.cutsq()) continue;
+    const double w = p.kernel.w(rsq);
+    if (i_wall)
+      sums[i].add(pj.sigma, pj.rho, r_ij, w);
+    else {
+      const double r_ji[3] = {-r_ij[0], -r_ij[1], -r_ij[2]};
+      sums[j].add(pi.sigma, pi.rho, r_ji, w);
     }
   }
-  for (int a = 0; a < 3; ++a) force[a] = pd.mass * acc[a];
+}
+
+// Half list: the pairs of particle i added to the rates (ParticleRates, indexed by
+// atom) of i and its owned neighbours: eqs. 6, 7, 34, 35 for granular particles, the
+// acceleration of eq. 9 for dummy ones. tally(i, j, f_ij, x_ij) gets each pair's force
+// on i if want_virial.
+template <class Particles, class RatesArray, class Tally>
+KOKKOS_INLINE_FUNCTION void add_pair_rates(const Particles &p, int i, int nlocal,
+                                           const RatesArray &rates, bool want_virial,
+                                           const Tally &tally)
+{
+  const bool i_granular = p.granular(i);
+  if (!i_granular && !p.wall(i)) return;
+  ParticleRates ri = ParticleRates::zero();
+  const PairParticle pi = p.particle(i);
+  const int n = p.num_neighbours(i);
+  for (int k = 0; k < n; ++k) {
+    const int j = p.neighbour(i, k);
+    if (!p.granular(j) && !(i_granular && p.wall(j))) continue;
+    const PairParticle &pj = p.particle(j);
+    PairGeometry g;
+    if (!pair_geometry(p, pi, pj, g)) continue;
+    const PairTerms t = PairTerms::make(pi, pj, g.dv, g.gradw, g.visc);
+    ri.add(t, pj, 1.0);
+    if (j < nlocal) rates[j].add(t, pi, -1.0);
+    if (want_virial) {
+      const double mm = pi.mass * pj.mass;
+      const double fij[3] = {mm * t.tg[0], mm * t.tg[1], mm * t.tg[2]};
+      tally(i, j, fij, g.dx);
+    }
+  }
+  rates[i].add(ri);
 }
 
 }    // namespace GRANSPH

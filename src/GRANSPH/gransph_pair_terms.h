@@ -1,5 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
-   GRANSPH: the pairwise SPH sums of the paper, one neighbour at a time.
+   GRANSPH: the pairwise SPH terms of the paper, one pair at a time.
    Continuity (eq. 6a), momentum with the full stress and Monaghan viscosity
    (eqs. 6b, 7), strain-rate and spin tensors (eqs. 34, 35), dummy-wall stress
    extrapolation (eq. 8). Usable on host and device.
@@ -52,19 +52,39 @@ KOKKOS_INLINE_FUNCTION double monaghan_viscosity(const double *dx, const double 
   return hv * (beta * hv - alpha * c_ij * d) / (d * d * rho_ij);
 }
 
-// Acceleration of i due to j, eq. 6b: m_j ((s_i + s_j)/(rho_i rho_j) - Pi_ij I) grad_i W.
-// The viscous term is a pressure (Monaghan 1992), hence the minus sign under our
-// tension-positive stress; the paper's "+ Pi" assumes the opposite sign of Pi.
-KOKKOS_INLINE_FUNCTION void momentum_term(const PairParticle &pi, const PairParticle &pj,
-                                          double visc, const double *gradw, double *acc)
+// Eq. 6b's bracket applied to grad_i W, ((s_i + s_j)/(rho_i rho_j) - Pi_ij I) grad_i W:
+// the acceleration of i per unit mass of j. The bracket is symmetric and
+// grad_j W = -grad_i W, so j gets the opposite per unit mass of i. The viscous term is
+// a pressure (Monaghan 1992), hence the minus sign under our tension-positive stress;
+// the paper's "+ Pi" assumes the opposite sign of Pi.
+KOKKOS_INLINE_FUNCTION void stress_gradient(const PairParticle &pi, const PairParticle &pj,
+                                            double visc, const double *gradw, double *tg)
 {
   const Sym3 t = (pi.inv_rho * pj.inv_rho) * (pi.sigma + pj.sigma) - Sym3::iso(visc);
-  acc[0] += pj.mass * (t.xx * gradw[0] + t.xy * gradw[1] + t.xz * gradw[2]);
-  acc[1] += pj.mass * (t.xy * gradw[0] + t.yy * gradw[1] + t.yz * gradw[2]);
-  acc[2] += pj.mass * (t.xz * gradw[0] + t.yz * gradw[1] + t.zz * gradw[2]);
+  tg[0] = t.xx * gradw[0] + t.xy * gradw[1] + t.xz * gradw[2];
+  tg[1] = t.xy * gradw[0] + t.yy * gradw[1] + t.yz * gradw[2];
+  tg[2] = t.xz * gradw[0] + t.yz * gradw[1] + t.zz * gradw[2];
 }
 
-// Rates of a granular particle accumulated over its neighbours.
+// What pair i-j adds to the rates of either particle, computed once for both.
+struct PairTerms {
+  double dv[3], gradw[3];    // v_i - v_j, grad_i W_ij
+  double dv_gradw;           // v_ij . grad_i W_ij = v_ji . grad_j W_ji
+  double tg[3];              // stress_gradient()
+
+  KOKKOS_INLINE_FUNCTION static PairTerms make(const PairParticle &pi, const PairParticle &pj,
+                                               const double *dv, const double *gradw, double visc)
+  {
+    PairTerms t{{dv[0], dv[1], dv[2]},
+                {gradw[0], gradw[1], gradw[2]},
+                dv[0] * gradw[0] + dv[1] * gradw[1] + dv[2] * gradw[2],
+                {0.0, 0.0, 0.0}};
+    stress_gradient(pi, pj, visc, gradw, t.tg);
+    return t;
+  }
+};
+
+// Rates of a particle accumulated over its neighbours.
 struct ParticleRates {
   double drho;            // eq. 6a
   double acc[3];          // eq. 6b
@@ -73,6 +93,26 @@ struct ParticleRates {
   KOKKOS_INLINE_FUNCTION static ParticleRates zero()
   {
     return {0.0, {0.0, 0.0, 0.0}, {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}};
+  }
+
+  // the terms of a pair with `other`: side +1 for i, -1 for j (grad_j W = -grad_i W)
+  KOKKOS_INLINE_FUNCTION void add(const PairTerms &t, const PairParticle &other, double side)
+  {
+    drho += other.mass * t.dv_gradw;
+    for (int a = 0; a < 3; ++a) acc[a] += side * other.mass * t.tg[a];
+    // v_ji (x) grad_i W = v_ij (x) grad_j W = -dv (x) gradw, weighted by the volume m/rho
+    const double s = -other.mass * other.inv_rho;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) grad_v[a][b] += s * t.dv[a] * t.gradw[b];
+  }
+
+  KOKKOS_INLINE_FUNCTION void add(const ParticleRates &r)
+  {
+    drho += r.drho;
+    for (int a = 0; a < 3; ++a) {
+      acc[a] += r.acc[a];
+      for (int b = 0; b < 3; ++b) grad_v[a][b] += r.grad_v[a][b];
+    }
   }
 
   // strain-rate tensor, eq. 34: the symmetric part of grad_v
@@ -90,20 +130,6 @@ struct ParticleRates {
     return {0.5 * (l[0][1] - l[1][0]), 0.5 * (l[0][2] - l[2][0]), 0.5 * (l[1][2] - l[2][1])};
   }
 };
-
-// All contributions of neighbour j to the rates of i. dx = x_i - x_j, dv = v_i - v_j,
-// gradw = grad_i W_ij.
-KOKKOS_INLINE_FUNCTION void add_neighbour(ParticleRates &r, const PairParticle &pi,
-                                          const PairParticle &pj, const double *dv,
-                                          const double *gradw, double visc)
-{
-  r.drho += pj.mass * (dv[0] * gradw[0] + dv[1] * gradw[1] + dv[2] * gradw[2]);
-  momentum_term(pi, pj, visc, gradw, r.acc);
-  // v_ji = -dv, weighted by the volume m_j/rho_j
-  const double s = -pj.mass * pj.inv_rho;
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) r.grad_v[a][b] += s * dv[a] * gradw[b];
-}
 
 // Dummy-particle stress, eq. 8 (Adami et al. 2012 generalised to a tensor):
 // sigma_d = (sum_k sigma_k W_dk - ((g - a_d) . sum_k rho_k r_dk W_dk) I) / sum_k W_dk,

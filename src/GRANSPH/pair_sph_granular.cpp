@@ -2,10 +2,10 @@
    GRANSPH: pair_style sph/granular.
 
    Per evaluation: ghosts get fresh density and stress; owned dummy particles
-   get their stress by extrapolation (eq. 8), and with it the force the grains
-   exert on them (eq. 9), and pass the stress to their ghosts; then every owned
-   granular particle sums its rates (eqs. 6, 7, 34, 35). The full neighbour
-   list lets each particle write only to itself.
+   get their stress by extrapolation (eq. 8) and pass it to their ghosts; then
+   the pairs give the rates of the granular particles (eqs. 6, 7, 34, 35) and
+   the forces the grains exert on the dummy particles (eq. 9). Over a half
+   neighbour list each pair is computed once for both of its particles.
 ------------------------------------------------------------------------- */
 
 #include "pair_sph_granular.h"
@@ -51,17 +51,19 @@ struct HostParticles {
 /* ---------------------------------------------------------------------- */
 
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
-    Pair(lmp), h(0.0), alpha(1.0), beta(1.0), integrator(nullptr), particles(nullptr),
-    nmax_particles(0)
+    Pair(lmp), h(0.0), alpha(1.0), beta(1.0), integrator(nullptr), nmax(0), particles(nullptr),
+    wall_sums(nullptr), rates(nullptr)
 {
   restartinfo = 1;
   single_enable = 0;
-  no_virial_fdotr_compute = 1;    // forces are written to owned atoms only
+  no_virial_fdotr_compute = 1;    // the pairs tally the virial (the forces are not central)
 }
 
 PairSPHGranular::~PairSPHGranular()
 {
   memory->sfree(particles);
+  memory->sfree(wall_sums);
+  memory->sfree(rates);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -84,17 +86,14 @@ void PairSPHGranular::compute(int eflag, int vflag)
   const int *ilist = list->ilist;
 
   fix.forward_comm_state();
-  if (nall > nmax_particles) {
-    nmax_particles = atom->nmax;
-    memory->sfree(particles);
-    particles = (PairParticle *) memory->smalloc(sizeof(PairParticle) * nmax_particles,
-                                                 "pair:particles");
-  }
+  if (nall > nmax) grow(atom->nmax);
   pack_particles(0, nall);
   const HostParticles p{particles, list->firstneigh, list->numneigh, mask, fix.groupbit,
                         fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), alpha, beta};
 
   if (fix.wallbit) {
+    for (int i = 0; i < nlocal; ++i) wall_sums[i] = GRANSPH::WallSums::zero();
+    for (int ii = 0; ii < inum; ++ii) GRANSPH::add_wall_sums(p, ilist[ii], nlocal, wall_sums);
     double g[3];
     fix.gravity_vector(g);
     for (int ii = 0; ii < inum; ++ii) {
@@ -107,35 +106,42 @@ void PairSPHGranular::compute(int eflag, int vflag)
         g_minus_a[a] = g[a] - (update->setupflag ? 0.0 : (v[d][a] - v_last[a]) / dt);
         v_last[a] = v[d][a];
       }
-      const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
-      particles[d].sigma = sums.stress(g_minus_a);
+      particles[d].sigma = wall_sums[d].stress(g_minus_a);
       particles[d].sigma.store(&fix.state[d][FixSPHIntegrate::SIGMA]);
-      // the grains' force on d (eq. 9) needs its own new stress only, not that of
-      // other walls; without grains inside the support it is zero
-      if (!sums.has_neighbours()) continue;
-      double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-      double fd[3];
-      GRANSPH::wall_force(p, d, fd, vflag_either ? vir : nullptr);
-      for (int a = 0; a < 3; ++a) f[d][a] += fd[a] / force->ftm2v;
-      if (vflag_either) tally_virial(d, vir);
     }
     fix.forward_comm_state();
     pack_particles(nlocal, nall);
   }
 
-  for (int ii = 0; ii < inum; ++ii) {
-    const int i = ilist[ii];
+  for (int i = 0; i < nlocal; ++i) rates[i] = GRANSPH::ParticleRates::zero();
+  auto tally = [&](int i, int j, const double *fij, const double *dx) {
+    ev_tally_xyz(i, j, nlocal, 0, 0.0, 0.0, fij[0], fij[1], fij[2], dx[0], dx[1], dx[2]);
+  };
+  for (int ii = 0; ii < inum; ++ii)
+    GRANSPH::add_pair_rates(p, ilist[ii], nlocal, rates, vflag_either, tally);
+
+  const int sphbits = fix.groupbit | fix.wallbit;
+  for (int i = 0; i < nlocal; ++i) {
+    if (!(mask[i] & sphbits)) continue;
+    const GRANSPH::ParticleRates &r = rates[i];
+    for (int a = 0; a < 3; ++a) f[i][a] += particles[i].mass * r.acc[a] / force->ftm2v;
     if (!(mask[i] & fix.groupbit)) continue;
-    double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    const GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, vflag_either ? vir : nullptr);
-    const double m = particles[i].mass;
-    for (int a = 0; a < 3; ++a) f[i][a] += m * r.acc[a] / force->ftm2v;
-    double *rates = fix.rates[i];
-    rates[FixSPHIntegrate::DRHO] = r.drho;
-    r.strain().store(&rates[FixSPHIntegrate::STRAIN]);
-    r.spin().store(&rates[FixSPHIntegrate::SPIN]);
-    if (vflag_either) tally_virial(i, vir);
+    double *fix_rates = fix.rates[i];
+    fix_rates[FixSPHIntegrate::DRHO] = r.drho;
+    r.strain().store(&fix_rates[FixSPHIntegrate::STRAIN]);
+    r.spin().store(&fix_rates[FixSPHIntegrate::SPIN]);
   }
+}
+
+void PairSPHGranular::grow(int n)
+{
+  nmax = n;
+  memory->sfree(particles);
+  memory->sfree(wall_sums);
+  memory->sfree(rates);
+  particles = (PairParticle *) memory->smalloc(sizeof(PairParticle) * nmax, "pair:particles");
+  wall_sums = (GRANSPH::WallSums *) memory->smalloc(sizeof(GRANSPH::WallSums) * nmax, "pair:wall_sums");
+  rates = (GRANSPH::ParticleRates *) memory->smalloc(sizeof(GRANSPH::ParticleRates) * nmax, "pair:rates");
 }
 
 // the pair data of the granular and dummy particles among atoms [from, to)
@@ -151,14 +157,6 @@ void PairSPHGranular::pack_particles(int from, int to)
     particles[i] = PairParticle::make(atom->x[i], atom->v[i], m, state[FixSPHIntegrate::RHO],
                                       Sym3::load(&state[FixSPHIntegrate::SIGMA]), E);
   }
-}
-
-void PairSPHGranular::tally_virial(int i, const double *vir)
-{
-  if (vflag_global)
-    for (int k = 0; k < 6; ++k) virial[k] += vir[k];
-  if (vflag_atom)
-    for (int k = 0; k < 6; ++k) vatom[i][k] += vir[k];
 }
 
 /* ----------------------------------------------------------------------
@@ -222,9 +220,10 @@ void PairSPHGranular::init_style()
     error->all(FLERR,
                "Pair style sph/granular needs a GRANSPH integrator (fix sph/elastoplastic or "
                "fix sph/phasechange)");
+  // a half list without Newton's third law across ranks: no reverse communication of
+  // the rates (a pair with a ghost is computed on both ranks)
   const int irequest = neighbor->request(this, instance_me);
-  neighbor->requests[irequest]->half = 0;
-  neighbor->requests[irequest]->full = 1;
+  neighbor->requests[irequest]->newton = 2;
 }
 
 double PairSPHGranular::init_one(int i, int j)

@@ -16,6 +16,8 @@ PairStyle(sph/granular,PairSPHGranular);
 
 namespace GRANSPH {
 struct PairParticle;
+struct ParticleRates;
+struct WallSums;
 }
 
 namespace LAMMPS_NS {
@@ -43,12 +45,15 @@ class PairSPHGranular : public Pair {
   FixSPHIntegrate *integrator;
 
   void allocate();
-  void tally_virial(int i, const double *vir);
 
  private:
-  GRANSPH::PairParticle *particles;    // per atom, owned and ghost: what the pairs read
-  int nmax_particles;
+  // per atom, owned and ghost
+  int nmax;
+  GRANSPH::PairParticle *particles;    // what the pairs read
+  GRANSPH::WallSums *wall_sums;        // of eq. 8, for the dummy particles
+  GRANSPH::ParticleRates *rates;       // summed over the pairs
 
+  void grow(int n);
   void pack_particles(int from, int to);
 };
 

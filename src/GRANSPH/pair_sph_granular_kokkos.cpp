@@ -53,7 +53,11 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::init_style()
   PairSPHGranular::init_style();
   if (!dynamic_cast<SPHStateKokkos *>(integrator))
     error->all(FLERR, "Pair style sph/granular/kk needs the /kk variant of the GRANSPH integrator");
+  // a full list: each particle writes only to itself, no atomics
   auto request = neighbor->requests[neighbor->nrequest - 1];
+  request->half = 0;
+  request->full = 1;
+  request->newton = 0;
   request->kokkos_host =
       std::is_same<DeviceType, LMPHostType>::value && !std::is_same<DeviceType, LMPDeviceType>::value;
   request->kokkos_device = std::is_same<DeviceType, LMPDeviceType>::value;
