@@ -9,6 +9,7 @@
 #include "compute_sph_wallforce.h"
 #include "fix_sph_elastoplastic.h"
 #include "fix_sph_inflow.h"
+#include "fix_sph_move.h"
 #include "fix_sph_outflow.h"
 #include "fix_sph_phasechange.h"
 #include "pair_sph_granular.h"
@@ -16,6 +17,7 @@
 #include "compute_sph_wallforce_kokkos.h"
 #include "fix_sph_inflow_kokkos.h"
 #include "fix_sph_model_kokkos.h"
+#include "fix_sph_move_kokkos.h"
 #include "pair_sph_granular_kokkos.h"
 
 using namespace LAMMPS_NS;
@@ -87,6 +89,9 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   register_style(reg, lmp, handle, "fix", "sph/inflow",
                  "GRANSPH: granular nozzle inserting layers of particles",
                  (void *) &fix_creator<FixSPHInflow>, true);
+  register_style(reg, lmp, handle, "fix", "sph/move",
+                 "GRANSPH: walls moved with a prescribed velocity at any timestep",
+                 (void *) &fix_creator<FixSPHMove>, true);
   register_style(reg, lmp, handle, "fix", "sph/outflow",
                  "GRANSPH: delete particles that leave a region",
                  (void *) &fix_creator<FixSPHOutflow>, true);
@@ -122,4 +127,9 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
                         "GRANSPH: granular nozzle, Kokkos (inserts on the host)",
                         (void *) &fix_creator<FixSPHInflowKokkos>,
                         (void *) &fix_creator<FixSPHInflowKokkos>, true);
+  register_kokkos_style(reg, lmp, handle, "fix",
+                        {"sph/move/kk", "sph/move/kk/device", "sph/move/kk/host"},
+                        "GRANSPH: walls moved with a prescribed velocity, Kokkos",
+                        (void *) &fix_creator<FixSPHMoveKokkos<LMPDeviceType>>,
+                        (void *) &fix_creator<FixSPHMoveKokkos<LMPHostType>>, true);
 }

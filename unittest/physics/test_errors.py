@@ -62,6 +62,13 @@ CASES = [
     ("two integrators", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019\n"
                                  "fix sph2 floor sph/elastoplastic sand.gransph Chen2019"),
      "Only one GRANSPH integrator"),
+    ("sph/move without vz", dict(run="fix move floor sph/move 1 0\nrun 10"), "expected vx vy vz"),
+    ("sph/move unknown variable", dict(run="fix move floor sph/move v_nosuch 0 0\nrun 10"),
+     "variable nosuch does not exist"),
+    ("sph/move atom-style variable", dict(run="variable u atom x\nfix move floor sph/move v_u 0 0\nrun 10"),
+     "variable u is not equal-style"),
+    ("sph/move on the grains", dict(run="fix move all sph/move 1 0 0\nrun 10"),
+     "group all has atoms that fix sph integrates"),
     ("invalid material values", dict(fix="fix sph sand sph/elastoplastic {bad} Bad"),
      "Poisson's ratio must be in"),
 ]

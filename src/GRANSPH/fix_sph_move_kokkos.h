@@ -1,0 +1,33 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: Kokkos twin of fix sph/move. The velocity is evaluated on the
+   host, as in the plain fix; the atoms move on the Kokkos device.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(sph/move/kk,FixSPHMoveKokkos<LMPDeviceType>);
+FixStyle(sph/move/kk/device,FixSPHMoveKokkos<LMPDeviceType>);
+FixStyle(sph/move/kk/host,FixSPHMoveKokkos<LMPHostType>);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_SPH_MOVE_KOKKOS_H
+#define LMP_FIX_SPH_MOVE_KOKKOS_H
+
+#include "fix_sph_move.h"
+#include "kokkos_type.h"
+
+namespace LAMMPS_NS {
+
+template <class DeviceType> class FixSPHMoveKokkos : public FixSPHMove {
+ public:
+  FixSPHMoveKokkos(class LAMMPS *, int, char **);
+
+  // device kernel (public: CUDA lambdas may not live in private members)
+  void move(const double *dx, const double *v) override;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
