@@ -56,7 +56,7 @@ PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
 {
   restartinfo = 1;
   single_enable = 0;
-  no_virial_fdotr_compute = 1;    // the pairs tally the virial (the forces are not central)
+  no_virial_fdotr_compute = 1;    // forces go to owned atoms only: the pairs tally the virial
 }
 
 PairSPHGranular::~PairSPHGranular()
@@ -77,42 +77,55 @@ void PairSPHGranular::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
 
   FixSPHIntegrate &fix = *integrator;
-  double **v = atom->v;
-  double **f = atom->f;
-  const int *mask = atom->mask;
-  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  const double dt = update->dt;
-  const int inum = list->inum;
-  const int *ilist = list->ilist;
-
+  const int nall = atom->nlocal + atom->nghost;
   fix.forward_comm_state();
   if (nall > nmax) grow(atom->nmax);
   pack_particles(0, nall);
-  const HostParticles p{particles, list->firstneigh, list->numneigh, mask, fix.groupbit,
+  const HostParticles p{particles, list->firstneigh, list->numneigh, atom->mask, fix.groupbit,
                         fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), alpha, beta};
-
   if (fix.wallbit) {
-    for (int i = 0; i < nlocal; ++i) wall_sums[i] = GRANSPH::WallSums::zero();
-    for (int ii = 0; ii < inum; ++ii) GRANSPH::add_wall_sums(p, ilist[ii], nlocal, wall_sums);
-    double g[3];
-    fix.gravity_vector(g);
-    for (int ii = 0; ii < inum; ++ii) {
-      const int d = ilist[ii];
-      if (!(mask[d] & fix.wallbit)) continue;
-      // wall acceleration from its velocity change since the last evaluation
-      double *v_last = &fix.start[d][FixSPHIntegrate::WALL_V];
-      double g_minus_a[3];
-      for (int a = 0; a < 3; ++a) {
-        g_minus_a[a] = g[a] - (update->setupflag ? 0.0 : (v[d][a] - v_last[a]) / dt);
-        v_last[a] = v[d][a];
-      }
-      particles[d].sigma = wall_sums[d].stress(g_minus_a);
-      particles[d].sigma.store(&fix.state[d][FixSPHIntegrate::SIGMA]);
-    }
+    wall_stresses(p);
     fix.forward_comm_state();
-    pack_particles(nlocal, nall);
+    pack_particles(atom->nlocal, nall);
   }
+  rates_and_forces(p);
+}
 
+// dummy-particle stresses, eq. 8, with the wall acceleration from the velocity
+// change since the last evaluation
+template <class Particles> void PairSPHGranular::wall_stresses(const Particles &p)
+{
+  FixSPHIntegrate &fix = *integrator;
+  const int nlocal = atom->nlocal, inum = list->inum;
+  const int *ilist = list->ilist;
+  for (int i = 0; i < nlocal; ++i) wall_sums[i] = GRANSPH::WallSums::zero();
+  for (int ii = 0; ii < inum; ++ii) GRANSPH::add_wall_sums(p, ilist[ii], nlocal, wall_sums);
+
+  double **v = atom->v;
+  double g[3];
+  fix.gravity_vector(g);
+  const double inv_dt = update->setupflag ? 0.0 : 1.0 / update->dt;
+  for (int ii = 0; ii < inum; ++ii) {
+    const int d = ilist[ii];
+    if (!p.wall(d)) continue;
+    double *v_last = &fix.start[d][FixSPHIntegrate::WALL_V];
+    double g_minus_a[3];
+    for (int a = 0; a < 3; ++a) {
+      g_minus_a[a] = g[a] - (v[d][a] - v_last[a]) * inv_dt;
+      v_last[a] = v[d][a];
+    }
+    particles[d].sigma = wall_sums[d].stress(g_minus_a);
+    particles[d].sigma.store(&fix.state[d][FixSPHIntegrate::SIGMA]);
+  }
+}
+
+// rates of the granular particles (eqs. 6, 7, 34, 35) and forces on the dummy
+// particles (eq. 9), summed over the pairs
+template <class Particles> void PairSPHGranular::rates_and_forces(const Particles &p)
+{
+  FixSPHIntegrate &fix = *integrator;
+  const int nlocal = atom->nlocal, inum = list->inum;
+  const int *ilist = list->ilist;
   for (int i = 0; i < nlocal; ++i) rates[i] = GRANSPH::ParticleRates::zero();
   auto tally = [&](int i, int j, const double *fij, const double *dx) {
     ev_tally_xyz(i, j, nlocal, 0, 0.0, 0.0, fij[0], fij[1], fij[2], dx[0], dx[1], dx[2]);
@@ -120,12 +133,12 @@ void PairSPHGranular::compute(int eflag, int vflag)
   for (int ii = 0; ii < inum; ++ii)
     GRANSPH::add_pair_rates(p, ilist[ii], nlocal, rates, vflag_either, tally);
 
-  const int sphbits = fix.groupbit | fix.wallbit;
+  double **f = atom->f;
   for (int i = 0; i < nlocal; ++i) {
-    if (!(mask[i] & sphbits)) continue;
+    if (!p.granular(i) && !p.wall(i)) continue;
     const GRANSPH::ParticleRates &r = rates[i];
     for (int a = 0; a < 3; ++a) f[i][a] += particles[i].mass * r.acc[a] / force->ftm2v;
-    if (!(mask[i] & fix.groupbit)) continue;
+    if (!p.granular(i)) continue;
     double *fix_rates = fix.rates[i];
     fix_rates[FixSPHIntegrate::DRHO] = r.drho;
     r.strain().store(&fix_rates[FixSPHIntegrate::STRAIN]);
@@ -140,8 +153,10 @@ void PairSPHGranular::grow(int n)
   memory->sfree(wall_sums);
   memory->sfree(rates);
   particles = (PairParticle *) memory->smalloc(sizeof(PairParticle) * nmax, "pair:particles");
-  wall_sums = (GRANSPH::WallSums *) memory->smalloc(sizeof(GRANSPH::WallSums) * nmax, "pair:wall_sums");
-  rates = (GRANSPH::ParticleRates *) memory->smalloc(sizeof(GRANSPH::ParticleRates) * nmax, "pair:rates");
+  wall_sums =
+      (GRANSPH::WallSums *) memory->smalloc(sizeof(GRANSPH::WallSums) * nmax, "pair:wall_sums");
+  rates = (GRANSPH::ParticleRates *) memory->smalloc(sizeof(GRANSPH::ParticleRates) * nmax,
+                                                     "pair:rates");
 }
 
 // the pair data of the granular and dummy particles among atoms [from, to)

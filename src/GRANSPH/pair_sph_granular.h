@@ -55,6 +55,8 @@ class PairSPHGranular : public Pair {
 
   void grow(int n);
   void pack_particles(int from, int to);
+  template <class Particles> void wall_stresses(const Particles &p);
+  template <class Particles> void rates_and_forces(const Particles &p);
 };
 
 }    // namespace LAMMPS_NS
