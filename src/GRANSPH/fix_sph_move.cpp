@@ -14,6 +14,7 @@
 #include "fix_sph_move.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "fix_sph_integrate.h"
@@ -97,12 +98,14 @@ void FixSPHMove::evaluate(double *u)
   }
 }
 
-// before the setup's pair evaluation: the walls get the velocity of the start
+// before the setup's pair evaluation: the walls, and their ghosts, get the velocity
+// of the start
 void FixSPHMove::setup_pre_force(int)
 {
   evaluate(u_start);
   const double none[3] = {0.0, 0.0, 0.0};
   move(none, u_start);
+  comm->forward_comm();
 }
 
 // in a step, variables see the time at its end

@@ -1,7 +1,9 @@
 """fix sph/move: a sand layer settling on a floor, with everything moving
 sideways at 5 m/s, matches the same run at rest (Galilean invariance: the floor
-is where the grains are in time when the pair runs); and a floor accelerated
-from rest at a covers a t^2 / 2 at the integrator's adaptive timestep."""
+is where the grains are in time when the pair runs, and it, with its ghosts,
+has the fix's velocity from the setup on, though the input gives it none); and a
+floor accelerated from rest at a covers a t^2 / 2 at the integrator's adaptive
+timestep."""
 
 import os
 import re
