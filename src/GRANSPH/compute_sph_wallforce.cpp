@@ -90,8 +90,13 @@ void ComputeSPHWallForce::init()
 void ComputeSPHWallForce::compute_vector()
 {
   invoked_vector = update->ntimestep;
-  group->fcm(igroup, vector);
+  total_force(vector);
   vector[3] = vector[0] * normal[0] + vector[1] * normal[1] + vector[2] * normal[2];
+}
+
+void ComputeSPHWallForce::total_force(double *f)
+{
+  group->fcm(igroup, f);
 }
 
 // whether any atom of the group, on any rank, is inside (or outside) the group of `bit`

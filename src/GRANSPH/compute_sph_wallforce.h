@@ -26,6 +26,8 @@ class ComputeSPHWallForce : public Compute {
  protected:
   double normal[3];    // unit normal of the wall
 
+  // the total force on the group's atoms, on all ranks
+  virtual void total_force(double *f);
   bool any_atom(int bit, bool inside) const;
 };
 

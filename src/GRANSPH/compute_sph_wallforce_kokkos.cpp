@@ -6,7 +6,6 @@
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
-#include "update.h"
 
 using namespace LAMMPS_NS;
 
@@ -22,9 +21,9 @@ ComputeSPHWallForceKokkos<DeviceType>::ComputeSPHWallForceKokkos(LAMMPS *lmp, in
   datamask_modify = EMPTY_MASK;
 }
 
-template <class DeviceType> void ComputeSPHWallForceKokkos<DeviceType>::compute_vector()
+// reduced on the device, without copying the forces to the host
+template <class DeviceType> void ComputeSPHWallForceKokkos<DeviceType>::total_force(double *total)
 {
-  invoked_vector = update->ntimestep;
   atomKK->sync(execution_space, datamask_read);
   auto f = atomKK->k_f.template view<DeviceType>();
   auto mask = atomKK->k_mask.template view<DeviceType>();
@@ -37,8 +36,7 @@ template <class DeviceType> void ComputeSPHWallForceKokkos<DeviceType>::compute_
           if (mask(i) & groupbit) s += f(i, a);
         },
         sum[a]);
-  MPI_Allreduce(sum, vector, 3, MPI_DOUBLE, MPI_SUM, world);
-  vector[3] = vector[0] * normal[0] + vector[1] * normal[1] + vector[2] * normal[2];
+  MPI_Allreduce(sum, total, 3, MPI_DOUBLE, MPI_SUM, world);
 }
 
 namespace LAMMPS_NS {

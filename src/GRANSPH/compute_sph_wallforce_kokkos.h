@@ -22,7 +22,9 @@ namespace LAMMPS_NS {
 template <class DeviceType> class ComputeSPHWallForceKokkos : public ComputeSPHWallForce {
  public:
   ComputeSPHWallForceKokkos(class LAMMPS *, int, char **);
-  void compute_vector() override;
+
+  // device reduction (public: CUDA lambdas may not live in private members)
+  void total_force(double *f) override;
 };
 
 }    // namespace LAMMPS_NS

@@ -241,7 +241,7 @@ void FixSPHIntegrate::check_finite() const
     if (!(mask[i] & groupbit)) continue;
     double sum = x[i][0] + x[i][1] + x[i][2] + v[i][0] + v[i][1] + v[i][2];
     for (int k = 0; k < NCOMM; ++k) sum += state[i][k];
-    if (!std::isfinite(sum) || !(state[i][RHO] > 0.0))
+    if (GRANSPH::bad_state(sum, state[i][RHO]))
       error->one(FLERR,
                  "Fix {}: atom {} has a non-finite state or non-positive density (rho {}, v {} {} "
                  "{}) at step {}",

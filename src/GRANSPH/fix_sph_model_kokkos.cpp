@@ -202,8 +202,7 @@ int FixSPHModelKokkos<DeviceType, Model>::count_bad_states()
         if (!(mask(i) & groupbit)) return;
         double sum = x(i, 0) + x(i, 1) + x(i, 2) + v(i, 0) + v(i, 1) + v(i, 2);
         for (int k = 0; k < FSI::NCOMM; ++k) sum += state(i, k);
-        // sum - sum is 0 for finite sums only
-        if (!(sum - sum == 0.0) || !(state(i, FSI::RHO) > 0.0)) ++count;
+        if (GRANSPH::bad_state(sum, state(i, FSI::RHO))) ++count;
       },
       bad);
   return bad;    // local: the rank that has one stops the run (error->one), no collective

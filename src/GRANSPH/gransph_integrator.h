@@ -79,6 +79,14 @@ KOKKOS_INLINE_FUNCTION void correct(const Model &model, ParticleState &p, const 
   p.sigma = model.update(start.sigma, p.sigma, r.d, r.w, p.rho, dt, regime);
 }
 
+// Whether a particle's state must stop the run: `sum` adds up its position, velocity,
+// density and stress, so it is finite only if they all are (sum - sum is 0 for finite
+// sums only); the density must be positive.
+KOKKOS_INLINE_FUNCTION bool bad_state(double sum, double rho)
+{
+  return !(sum - sum == 0.0) || !(rho > 0.0);
+}
+
 // Eq. 19: dt = C min(sqrt(h / max|a|), h / max c).
 KOKKOS_INLINE_FUNCTION double cfl_timestep(double cfl, double h, double amax, double cmax)
 {

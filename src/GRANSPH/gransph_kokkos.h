@@ -9,7 +9,6 @@
 #define LMP_GRANSPH_KOKKOS_H
 
 #include "fix_sph_integrate.h"
-#include "gransph_integrator.h"
 #include "gransph_kernel.h"
 #include "gransph_pair_terms.h"
 #include "kokkos_type.h"

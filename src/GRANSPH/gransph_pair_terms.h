@@ -151,7 +151,8 @@ struct WallSums {
     w += wdk;
   }
 
-  // g_minus_a = g - a_d; a dummy particle without granular neighbours is stress-free
+  // g_minus_a = g - a_d (see wall_gravity); a dummy particle without granular
+  // neighbours is stress-free
   KOKKOS_INLINE_FUNCTION Sym3 stress(const double *g_minus_a) const
   {
     if (w <= 0.0) return Sym3::zero();
@@ -160,6 +161,18 @@ struct WallSums {
     return (1.0 / w) * (sigma_w - Sym3::iso(hydro));
   }
 };
+
+// g - a_d of eq. 8 for a dummy particle of velocity v, with its acceleration a_d from
+// the velocity change since the last evaluation (inv_dt = 0 at a run's setup: none);
+// v_last becomes v for the next one.
+KOKKOS_INLINE_FUNCTION void wall_gravity(const double *g, const double *v, double *v_last,
+                                         double inv_dt, double *g_minus_a)
+{
+  for (int a = 0; a < 3; ++a) {
+    g_minus_a[a] = g[a] - (v[a] - v_last[a]) * inv_dt;
+    v_last[a] = v[a];
+  }
+}
 
 }    // namespace GRANSPH
 

@@ -108,12 +108,8 @@ template <class Particles> void PairSPHGranular::wall_stresses(const Particles &
   for (int ii = 0; ii < inum; ++ii) {
     const int d = ilist[ii];
     if (!p.wall(d)) continue;
-    double *v_last = &fix.start[d][FixSPHIntegrate::WALL_V];
     double g_minus_a[3];
-    for (int a = 0; a < 3; ++a) {
-      g_minus_a[a] = g[a] - (v[d][a] - v_last[a]) * inv_dt;
-      v_last[a] = v[d][a];
-    }
+    GRANSPH::wall_gravity(g, v[d], &fix.start[d][FixSPHIntegrate::WALL_V], inv_dt, g_minus_a);
     particles[d].sigma = wall_sums[d].stress(g_minus_a);
     particles[d].sigma.store(&fix.state[d][FixSPHIntegrate::SIGMA]);
   }

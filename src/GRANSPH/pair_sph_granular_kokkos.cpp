@@ -173,10 +173,7 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
         if (!p.wall(d)) return;
         const double gd[3] = {gx, gy, gz};
         double g_minus_a[3];
-        for (int a = 0; a < 3; ++a) {
-          g_minus_a[a] = gd[a] - (particles(d).v[a] - start(d, FSI::WALL_V + a)) * inv_dt;
-          start(d, FSI::WALL_V + a) = particles(d).v[a];
-        }
+        GRANSPH::wall_gravity(gd, particles(d).v, &start(d, FSI::WALL_V), inv_dt, g_minus_a);
         const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
         particles(d).sigma = sums.stress(g_minus_a);
         particles(d).sigma.store(&state(d, FSI::SIGMA));

@@ -9,6 +9,19 @@ import numpy as np
 TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 LMP = os.path.join(TOP, "tools", "lmp")
 
+# The small inputs' geometry: a 5 cm cube of sand (type 1, group sand) on three layers
+# of dummy floor (type 2, group floor), 1 cm spacing, in a 10 x 10 x 13 cm box.
+SAND_BLOCK = """region box block 0 0.1 0 0.1 -0.03 0.1 units box
+create_box 2 box
+lattice sc 0.01 origin 0.5 0.5 0.5
+region sand block 0 0.05 0 0.05 0 0.05 units box
+region floor block 0 0.05 0 0.05 -0.03 0 units box
+create_atoms 1 region sand
+create_atoms 2 region floor
+group sand type 1
+group floor type 2
+"""
+
 
 def run(input_file, variables=None, ranks=1, args=(), cwd=None):
     """Run input_file with -var name value pairs; return stdout, fail on error."""

@@ -13,16 +13,7 @@ atom_style atomic
 atom_modify map array
 boundary f f f
 {comm}
-region box block 0 0.1 0 0.1 -0.03 0.1 units box
-create_box 2 box
-lattice sc 0.01 origin 0.5 0.5 0.5
-region sand block 0 0.05 0 0.05 0 0.05 units box
-region floor block 0 0.05 0 0.05 -0.03 0 units box
-create_atoms 1 region sand
-create_atoms 2 region floor
-group sand type 1
-group floor type 2
-{mass}
+""" + gransph_run.SAND_BLOCK + """{mass}
 pair_style {pair_style}
 pair_coeff {pair_coeff}
 fix gravity sand gravity 9.81 vector 0 0 -1
