@@ -73,6 +73,14 @@ BAD_STATE = r"atom \d+ has a non-finite state or non-positive density"
 CASES.append(("a blow-up is caught with the atom ID", BLOW_UP, BAD_STATE))
 KOKKOS = ["-k", "on", "t", "1", "-sf", "kk"]
 
+MOVE_2D = """plugin load gransphplugin.so
+dimension 2
+boundary p p p
+region box block 0 1 0 1 -0.5 0.5 units box
+create_box 1 box
+fix move all sph/move 0 1 1
+"""
+
 
 def run_case(tmp, fields, args=()):
     text = BASE.format(**{**GOOD, **fields}).replace("{bad}", os.path.join(tmp, "bad.gransph"))
@@ -88,6 +96,8 @@ with tempfile.TemporaryDirectory() as tmp:
     for name, fields, expected in CASES:
         code, error = run_case(tmp, fields)
         check(name, code != 0 and re.search(expected, error), error or "no error")
+    code, error = gransph_run.first_error(tmp, MOVE_2D)
+    check("sph/move with vz in 2d", code != 0 and "vz must be 0" in error, error or "no error")
     code, error = run_case(tmp, BLOW_UP, KOKKOS)
     check("the /kk integrator catches a blow-up too", code != 0 and re.search(BAD_STATE, error),
           error or "no error")
