@@ -22,6 +22,14 @@ group sand type 1
 group floor type 2
 """
 
+# An empty periodic 2d box with the plugin loaded, for inputs that fail at a command.
+EMPTY_2D_BOX = """plugin load gransphplugin.so
+dimension 2
+boundary p p p
+region box block 0 1 0 1 -0.5 0.5 units box
+create_box 1 box
+"""
+
 
 def run(input_file, variables=None, ranks=1, args=(), cwd=None):
     """Run input_file with -var name value pairs; return stdout, fail on error."""

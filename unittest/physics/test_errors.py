@@ -73,13 +73,7 @@ BAD_STATE = r"atom \d+ has a non-finite state or non-positive density"
 CASES.append(("a blow-up is caught with the atom ID", BLOW_UP, BAD_STATE))
 KOKKOS = ["-k", "on", "t", "1", "-sf", "kk"]
 
-MOVE_2D = """plugin load gransphplugin.so
-dimension 2
-boundary p p p
-region box block 0 1 0 1 -0.5 0.5 units box
-create_box 1 box
-fix move all sph/move 0 1 1
-"""
+MOVE_2D = gransph_run.EMPTY_2D_BOX + "fix move all sph/move 0 1 1\n"
 
 
 def run_case(tmp, fields, args=()):

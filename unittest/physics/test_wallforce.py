@@ -78,13 +78,7 @@ CASES = [
 ]
 
 # in 2d the wall force has no z component to project
-BASE_2D = """plugin load gransphplugin.so
-dimension 2
-boundary p p p
-region box block 0 1 0 1 -0.5 0.5 units box
-create_box 1 box
-compute w all sph/wallforce 0 1 1
-"""
+BASE_2D = gransph_run.EMPTY_2D_BOX + "compute w all sph/wallforce 0 1 1\n"
 
 
 with tempfile.TemporaryDirectory() as tmp:
