@@ -10,6 +10,12 @@ while tan(theta) < 3 alpha_phi: atan(3 alpha_phi) = 29.6 deg for phi = 37 deg un
 plane-strain matching (the paper's), phi itself under the simple-shear matching. The
 phase-change model slides above atan(mu_s).
 
+Holding means not accelerating (|a| < 0.02 m/s^2, against the 0.3 m/s^2 of free sliding
+1.5 degrees above the slide angle) at a speed left from loading the stress-free layer
+below 0.01 m/s: a single particle layer creeps at a few mm/s after its loading, by more
+the closer the slope is to the slide angle (0.2 mm/s at 15 degrees, 3.5 mm/s at 28.1 for
+plane-strain Drucker-Prager at dx = 0.02), where two layers and more stop within 0.5 mm/s.
+
   test_slope.py MODEL [fix keywords ...]
 """
 
@@ -58,9 +64,9 @@ def main():
                 case = f"{layers} layer(s), dx {dx}"
                 vx, a, z_held = run(tmp, model, options, layers, dx, below)
                 check(f"{case}: holds at {below:.1f} deg (slide angle {threshold:.1f})",
-                      abs(vx) < 1e-3 and abs(a) < 0.02, f"v {vx:.2e} m/s, a {a:.2e} m/s^2")
+                      abs(vx) < 0.01 and abs(a) < 0.02, f"v {vx:.2e} m/s, a {a:.2e} m/s^2")
                 vx, a, z_sliding = run(tmp, model, options, layers, dx, above)
-                check(f"{case}: slides at {above:.1f} deg", a > 0.3 * a_free,
+                check(f"{case}: slides at {above:.1f} deg", a > 0.5 * a_free,
                       f"v {vx:.3f} m/s, a {a:.3f} m/s^2 (free sliding {a_free:.3f})")
                 # the gravity's normal component differs by cos(above)/cos(below) - 1 = 2%:
                 # the elastic layer's height differs by far less than 0.05 dx
