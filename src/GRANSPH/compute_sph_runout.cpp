@@ -5,10 +5,10 @@
    fine bins; the window of BINS_PER_WINDOW bins centred on each bin (an annulus
    of the given width in 3d, two strips in 2d) gives the deposit's equivalent
    thickness there, the volume in it over its area. The deposit edge is the
-   outermost grain in a layer at least threshold * h0 thick: a fixed fraction of
-   the initial height, so the edge means the same at every resolution, while a
-   layer thinner than that (the skirt) is reported by its volume fraction beyond
-   the edge rather than hidden.
+   outermost grain in a layer at least threshold * scale thick: a thickness fixed
+   in the problem's units (a fraction of the column's radius, say), so the edge
+   means the same at every resolution, while a layer thinner than that (the skirt)
+   is reported by its volume fraction beyond the edge rather than hidden.
 ------------------------------------------------------------------------- */
 
 #include "compute_sph_runout.h"
@@ -29,8 +29,8 @@ using namespace LAMMPS_NS;
 enum { EDGE, R95, RMAX, SKIRT, THICKNESS, ZMAX, NVALUES };
 
 /* ----------------------------------------------------------------------
-   compute ID group sph/runout x0 y0 h0 width [threshold f]   (3d)
-   compute ID group sph/runout x0 h0 width [threshold f]      (2d)
+   compute ID group sph/runout x0 y0 scale width [threshold f]   (3d)
+   compute ID group sph/runout x0 scale width [threshold f]      (2d)
 ------------------------------------------------------------------------- */
 
 ComputeSPHRunout::ComputeSPHRunout(LAMMPS *lmp, int narg, char **arg) :
@@ -38,13 +38,14 @@ ComputeSPHRunout::ComputeSPHRunout(LAMMPS *lmp, int narg, char **arg) :
 {
   const int naxis = domain->dimension == 3 ? 2 : 1;
   if (narg < 5 + naxis)
-    error->all(FLERR, "Illegal compute sph/runout command: expected {} h0 width [threshold f]",
+    error->all(FLERR, "Illegal compute sph/runout command: expected {} scale width [threshold f]",
                naxis == 2 ? "x0 y0" : "x0");
   int iarg = 3;
   for (int a = 0; a < naxis; ++a) axis[a] = utils::numeric(FLERR, arg[iarg++], false, lmp);
-  h0 = utils::numeric(FLERR, arg[iarg++], false, lmp);
+  scale = utils::numeric(FLERR, arg[iarg++], false, lmp);
   width = utils::numeric(FLERR, arg[iarg++], false, lmp);
-  if (h0 <= 0.0 || width <= 0.0) error->all(FLERR, "Compute sph/runout: h0 and width must be > 0");
+  if (scale <= 0.0 || width <= 0.0)
+    error->all(FLERR, "Compute sph/runout: scale and width must be > 0");
   while (iarg < narg) {
     if (strcmp(arg[iarg], "threshold") == 0 && iarg + 1 < narg) {
       threshold = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -148,12 +149,13 @@ void ComputeSPHRunout::compute_vector()
     thickest = std::max(thickest, thickness[k]);
   }
 
-  // the edge: the outermost grain in a layer at least threshold * h0 thick
+  // the edge: the outermost grain in a layer at least threshold * scale thick
   double edge_local = 0.0, edge = 0.0;
   for (int i = 0; i < nlocal; ++i)
     if (mask[i] & groupbit) {
       const double r = radius(x[i]);
-      if (thickness[bin_of(r, bin, nbins)] >= threshold * h0) edge_local = std::max(edge_local, r);
+      if (thickness[bin_of(r, bin, nbins)] >= threshold * scale)
+        edge_local = std::max(edge_local, r);
     }
   MPI_Allreduce(&edge_local, &edge, 1, MPI_DOUBLE, MPI_MAX, world);
 

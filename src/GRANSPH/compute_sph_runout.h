@@ -28,9 +28,9 @@ class ComputeSPHRunout : public Compute {
 
  private:
   double axis[2];      // the vertical axis through (axis[0], axis[1]) (x in 2d)
-  double h0;           // the thickness the threshold is a fraction of
+  double scale;        // the thickness the threshold is a fraction of
   double width;        // of the sliding window (annulus) the thickness is taken over
-  double threshold;    // edge: the thickness falls below threshold * h0
+  double threshold;    // edge: the thickness falls below threshold * scale
   double rho0;         // a grain's volume is m / rho0
   std::vector<double> volume;    // per fine bin, summed over the ranks
 
