@@ -6,6 +6,7 @@
 #include "lammpsplugin.h"
 #include "version.h"
 
+#include "compute_sph_stress_atom.h"
 #include "compute_sph_wallforce.h"
 #include "fix_sph_elastoplastic.h"
 #include "fix_sph_inflow.h"
@@ -98,6 +99,9 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   register_style(reg, lmp, handle, "compute", "sph/wallforce",
                  "GRANSPH: force of the grains on a wall of dummy particles",
                  (void *) &compute_creator<ComputeSPHWallForce>, true);
+  register_style(reg, lmp, handle, "compute", "sph/stress/atom",
+                 "GRANSPH: per-atom p, q, principal stresses, Lode angle, mobilised strength",
+                 (void *) &compute_creator<ComputeSPHStressAtom>, true);
 
   register_kokkos_style(reg, lmp, handle, "pair",
                         {"sph/granular/kk", "sph/granular/kk/device", "sph/granular/kk/host"},
