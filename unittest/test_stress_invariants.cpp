@@ -17,7 +17,7 @@ constexpr double PI = 3.14159265358979323846;
 
 // Table 2 of the paper
 const DruckerPrager DP = DruckerPrager::from_material(20.0e6, 0.3, 37.0 * PI / 180.0, 0.0, 0.0);
-const PhaseChange PC = PhaseChange::from_material(20.0e6, 0.3, 1400.0, 1.1233, 0.3819, 0.6435);
+const PhaseChange PC = PhaseChange::from_material(20.0e6, 0.3, 1500.0, 1.1233, 0.6419, 0.8435);
 
 // tension-positive stress of compressions c1, c2, c3 along the axes x, y, z
 Sym3 compressions(double c1, double c2, double c3)
