@@ -12,12 +12,15 @@ using namespace GRANSPH;
 namespace {
 constexpr double PI = 3.14159265358979323846;
 
-// a particle at rest at the origin, with Young's modulus 20 MPa for its sound speed
+// a particle at rest at the origin, with the sound speed of Young's modulus 20 MPa
 PairParticle particle(double mass, double rho, const Sym3 &sigma)
 {
   const double zero[3] = {0.0, 0.0, 0.0};
-  return PairParticle::make(zero, zero, mass, rho, sigma, 20e6);
+  return PairParticle::make(zero, zero, mass, rho, sigma, sound_speed(20e6, rho));
 }
+
+// the paper's viscosity, alpha = beta = 1 with c = sqrt(E / rho)
+const Viscosity PAPER_VISCOSITY{1.0, 1.0, true, Viscosity::PAPER, 0.0};
 
 // Simpson's rule over the radial support [0, 2h] of r^(dim-1) W(r)
 double radial_integral(int dim, double h)
@@ -76,9 +79,11 @@ TEST(WendlandC2, GradientIsAntisymmetric)
 
 namespace {
 // Particles on a simple cubic lattice around the origin, spacing dx, h = 1.3 dx,
-// moving with the velocity field v = L x.
+// moving with the velocity field v = L x. With a free surface at z = surface, only
+// the particles below it are neighbours (the origin is half a spacing or more below).
 struct Lattice {
   double dx = 0.01, h = 0.013, rho = 2000.0;
+  double surface = 1.0;
   double mass() const { return rho * dx * dx * dx; }
 
   template <class F> void for_neighbours(F &&f) const
@@ -89,6 +94,7 @@ struct Lattice {
         for (int k = -n; k <= n; ++k) {
           if (!i && !j && !k) continue;
           const double xj[3] = {i * dx, j * dx, k * dx};
+          if (xj[2] > surface) continue;
           f(xj);
         }
   }
@@ -101,11 +107,14 @@ struct Lattice {
     for_neighbours([&](const double *xj) {
       const double dx_ij[3] = {-xj[0], -xj[1], -xj[2]};
       const double rsq = xj[0] * xj[0] + xj[1] * xj[1] + xj[2] * xj[2];
-      const double fw = WendlandC2::make(h, 3).grad_factor(rsq);
+      const WendlandC2 kernel = WendlandC2::make(h, 3);
+      if (rsq >= kernel.cutsq()) return;
+      double w, fw;
+      kernel.w_and_grad_factor(rsq, w, fw);
       const double gradw[3] = {fw * dx_ij[0], fw * dx_ij[1], fw * dx_ij[2]};
       double dv[3];
       for (int a = 0; a < 3; ++a) dv[a] = -(L[a][0] * xj[0] + L[a][1] * xj[1] + L[a][2] * xj[2]);
-      r.add(PairTerms::make(p, p, dv, gradw, 0.0), p, 1.0);
+      r.add(PairTerms::make(p, p, dx_ij, dv, gradw, w, 0.0), p, 1.0);
     });
     return r;
   }
@@ -173,8 +182,8 @@ TEST(PairTerms, ViscosityOnlyBetweenApproachingParticles)
   const double dx[3] = {0.01, 0.0, 0.0};
   const double approach[3] = {-1.0, 0.0, 0.0};
   const double separate[3] = {1.0, 0.0, 0.0};
-  EXPECT_GT(monaghan_viscosity(dx, approach, 1e-4, 0.012, 1.0, 1.0, p, p), 0.0);
-  EXPECT_EQ(monaghan_viscosity(dx, separate, 1e-4, 0.012, 1.0, 1.0, p, p), 0.0);
+  EXPECT_GT(monaghan_viscosity(dx, approach, 1e-4, 0.012, PAPER_VISCOSITY, p, p), 0.0);
+  EXPECT_EQ(monaghan_viscosity(dx, separate, 1e-4, 0.012, PAPER_VISCOSITY, p, p), 0.0);
 }
 
 namespace {
@@ -192,10 +201,12 @@ struct TwoParticles {
     const double x[3] = {from * xij[0], from * xij[1], from * xij[2]};
     const double v[3] = {from * vij[0], from * vij[1], from * vij[2]};
     const double rsq = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
-    const double fw = WendlandC2::make(h, 3).grad_factor(rsq);
+    double w, fw;
+    WendlandC2::make(h, 3).w_and_grad_factor(rsq, w, fw);
     const double g[3] = {fw * x[0], fw * x[1], fw * x[2]};
     const PairParticle &self = from > 0 ? pi : pj, &other = from > 0 ? pj : pi;
-    return PairTerms::make(self, other, v, g, monaghan_viscosity(x, v, rsq, h, 1.0, 1.0, self, other));
+    return PairTerms::make(self, other, x, v, g, w,
+                           monaghan_viscosity(x, v, rsq, h, PAPER_VISCOSITY, self, other));
   }
 };
 }    // namespace
@@ -227,21 +238,164 @@ TEST(PairTerms, OnePairServesBothParticles)
     for (int b = 0; b < 3; ++b)
       EXPECT_NEAR(from_pair.grad_v[a][b], own.grad_v[a][b], 1e-12 * std::fabs(own.grad_v[a][b]));
   }
+  EXPECT_NEAR(from_pair.shape.xz, own.shape.xz, 1e-12 * std::fabs(own.shape.xz));
+  EXPECT_NEAR(from_pair.viscous_pressure(), own.viscous_pressure(), 1e-12 * own.viscous_pressure());
 }
 
-TEST(WallSums, HydrostaticExtrapolationBelowGrains)
+// The viscous pressure of a pair is rho_i rho_j Pi_ij / 2: the pressure that, put in
+// place of Pi in eq. 6b, pushes the pair apart as much.
+TEST(PairTerms, ViscousPressureOfOnePair)
 {
-  // grains at rest above a dummy particle, stress sigma_k; gravity -z
+  const TwoParticles two;
+  const PairTerms t = two.terms(1.0);
+  ParticleRates ri = ParticleRates::zero();
+  ri.add(t, two.pj, 1.0);
+  const double rsq = two.xij[0] * two.xij[0] + two.xij[1] * two.xij[1] + two.xij[2] * two.xij[2];
+  const double pi_ij = monaghan_viscosity(two.xij, two.vij, rsq, two.h, PAPER_VISCOSITY, two.pi, two.pj);
+  EXPECT_GT(pi_ij, 0.0);
+  EXPECT_NEAR(ri.viscous_pressure(), 0.5 * two.pi.rho * two.pj.rho * pi_ij, 1e-12 * ri.viscous_pressure());
+}
+
+// A general linear velocity field v = L x
+const double LINEAR_FIELD[3][3] = {{0.3, -1.2, 0.5}, {0.7, -0.4, 2.0}, {-0.9, 0.25, 0.1}};
+
+// The renormalised gradient is exact for a linear field inside the material, where
+// the plain one is off by the lattice's gradient consistency (a few percent)...
+TEST(CorrectedGradient, ExactForALinearFieldInside)
+{
+  Lattice lat;
+  ParticleRates r = lat.rates(LINEAR_FIELD);
+  EXPECT_GT(std::fabs(r.grad_v[0][1] - LINEAR_FIELD[0][1]), 1e-3);
+  r.correct_gradient(3);
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) EXPECT_NEAR(r.grad_v[a][b], LINEAR_FIELD[a][b], 1e-12);
+}
+
+// ...and at a free surface, where the plain gradient loses up to half of it.
+TEST(CorrectedGradient, ExactForALinearFieldAtAFreeSurface)
+{
+  for (double surface : {0.0, 0.01}) {    // on the surface, one spacing below it
+    Lattice lat;
+    lat.surface = surface;
+    ParticleRates r = lat.rates(LINEAR_FIELD);
+    EXPECT_GT(std::fabs(r.grad_v[1][2] - LINEAR_FIELD[1][2]), 0.1) << surface;
+    r.correct_gradient(3);
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) EXPECT_NEAR(r.grad_v[a][b], LINEAR_FIELD[a][b], 1e-12) << surface;
+  }
+}
+
+// Next to a wall the dummy particles are neighbours like the grains (the neighbour
+// sums add them with the same terms): a grain in a monolayer on three layers of
+// dummies that move with the field, with a free surface above, gets the exact
+// gradient too; in 2d too.
+TEST(CorrectedGradient, ExactNextToAWallAndIn2D)
+{
+  const double dx = 0.01, h = 0.012, rho = 1500.0;
+  for (int dim : {2, 3}) {
+    const PairParticle p = particle(rho * std::pow(dx, dim), rho, Sym3::zero());
+    const WendlandC2 kernel = WendlandC2::make(h, dim);
+    ParticleRates r = ParticleRates::zero();
+    // grain at the origin in a monolayer (j = 0), dummies in three layers below it
+    const int nk = dim == 3 ? 4 : 0;
+    for (int i = -4; i <= 4; ++i)
+      for (int k = -nk; k <= nk; ++k)
+        for (int j = -3; j <= 0; ++j) {
+          const double xj[3] = {i * dx, dim == 3 ? k * dx : j * dx, dim == 3 ? j * dx : 0.0};
+          const double dx_ij[3] = {-xj[0], -xj[1], -xj[2]};
+          const double rsq = xj[0] * xj[0] + xj[1] * xj[1] + xj[2] * xj[2];
+          if (rsq == 0.0 || rsq >= kernel.cutsq()) continue;
+          double w, fw;
+          kernel.w_and_grad_factor(rsq, w, fw);
+          const double gradw[3] = {fw * dx_ij[0], fw * dx_ij[1], fw * dx_ij[2]};
+          double dv[3];
+          for (int a = 0; a < 3; ++a)
+            dv[a] = -(LINEAR_FIELD[a][0] * xj[0] + LINEAR_FIELD[a][1] * xj[1] +
+                      (dim == 3 ? LINEAR_FIELD[a][2] * xj[2] : 0.0));
+          if (dim == 2) dv[2] = 0.0;
+          r.add(PairTerms::make(p, p, dx_ij, dv, gradw, w, 0.0), p, 1.0);
+        }
+    r.correct_gradient(dim);
+    for (int a = 0; a < dim; ++a)
+      for (int b = 0; b < dim; ++b) EXPECT_NEAR(r.grad_v[a][b], LINEAR_FIELD[a][b], 1e-12) << dim;
+  }
+}
+
+// Too few neighbours: the correction would divide by a near-singular matrix, so the
+// plain gradient stays.
+TEST(CorrectedGradient, FewNeighboursKeepThePlainGradient)
+{
+  const PairParticle p = particle(1.0, 1000.0, Sym3::zero());
+  const double dx_ij[3] = {-0.01, 0.0, 0.0}, dv[3] = {-0.02, 0.0, 0.0};
+  const WendlandC2 kernel = WendlandC2::make(0.012, 3);
+  double w, fw;
+  kernel.w_and_grad_factor(1e-4, w, fw);
+  const double gradw[3] = {fw * dx_ij[0], 0.0, 0.0};
+  ParticleRates r = ParticleRates::zero();
+  r.add(PairTerms::make(p, p, dx_ij, dv, gradw, w, 0.0), p, 1.0);
+  const double plain = r.grad_v[0][0];
+  r.correct_gradient(3);
+  EXPECT_EQ(r.grad_v[0][0], plain);
+}
+
+namespace {
+// a dummy particle dz below a grain of stress sk; gravity -z
+WallSums one_grain_above(const Sym3 &sk, double rho, double dz)
+{
   WallSums sums = WallSums::zero();
-  const double rho = 1500.0, h = 0.01;
-  const Sym3 sk = Sym3::iso(-3000.0);
-  const double r_dk[3] = {0.0, 0.0, -0.01};    // dummy 1 cm below the grain
-  sums.add(sk, rho, r_dk, WendlandC2::make(h, 3).w(1e-4));
-  const double g[3] = {0.0, 0.0, -9.81};
-  const Sym3 sd = sums.stress(g);
-  // one layer deeper: more compressive by rho g dz
-  EXPECT_NEAR(sd.zz, -3000.0 - rho * 9.81 * 0.01, 1e-9);
-  EXPECT_NEAR(sd.xx, -3000.0 - rho * 9.81 * 0.01, 1e-9);
-  EXPECT_EQ(sd.xy, 0.0);
-  EXPECT_EQ(WallSums::zero().stress(g).zz, 0.0);    // no neighbours: stress-free
+  const double r_dk[3] = {0.0, 0.0, -dz};
+  sums.add(sk, rho, r_dk, WendlandC2::make(0.01, 3).w(dz * dz));
+  return sums;
+}
+const double G_DOWN[3] = {0.0, 0.0, -9.81};
+}    // namespace
+
+// Eq. 8 in index form: only the component along gravity gets the weight of the
+// grains above the dummy.
+TEST(WallSums, PaperAddsTheWeightAlongGravityOnly)
+{
+  const double rho = 1500.0, dz = 0.01;
+  const Sym3 sk{-3000.0, -2000.0, -4000.0, 100.0, 600.0, -300.0};
+  const Sym3 sd = one_grain_above(sk, rho, dz).stress(G_DOWN, WallSums::PAPER);
+  EXPECT_NEAR(sd.zz, sk.zz - rho * 9.81 * dz, 1e-9);
+  EXPECT_NEAR(sd.xx, sk.xx, 1e-9);
+  EXPECT_NEAR(sd.xz, sk.xz, 1e-9);
+  EXPECT_EQ(WallSums::zero().stress(G_DOWN, WallSums::PAPER).zz, 0.0);    // stress-free
+}
+
+// RATIO: the same normal stress on the wall, and the shear stress (and every other
+// component) in the grains' proportion to it, so the wall's friction is the grains'.
+TEST(WallSums, RatioKeepsTheGrainsStressRatio)
+{
+  const double rho = 1500.0, dz = 0.01, q = rho * 9.81 * dz;
+  const Sym3 sk{-3000.0, -2000.0, -4000.0, 100.0, 600.0, -300.0};
+  const Sym3 sd = one_grain_above(sk, rho, dz).stress(G_DOWN, WallSums::RATIO);
+  EXPECT_NEAR(sd.zz, sk.zz - q, 1e-9);
+  const double growth = (sk.zz - q) / sk.zz;
+  for (double ratio : {sd.xx / sk.xx, sd.yy / sk.yy, sd.xy / sk.xy, sd.xz / sk.xz, sd.yz / sk.yz})
+    EXPECT_NEAR(ratio, growth, 1e-12);
+}
+
+// A stress-free grain (landing) gives the weight alone on the normal; a wall above
+// the grains (negative weight) gets no tension; no neighbours, no stress.
+TEST(WallSums, RatioLimits)
+{
+  const double rho = 1500.0, dz = 0.01, q = rho * 9.81 * dz;
+  const Sym3 free_fall = one_grain_above(Sym3::zero(), rho, dz).stress(G_DOWN, WallSums::RATIO);
+  EXPECT_NEAR(free_fall.zz, -q, 1e-9);
+  EXPECT_NEAR(free_fall.xx, 0.0, 1e-12);
+  EXPECT_NEAR(free_fall.xz, 0.0, 1e-12);
+
+  // a small stress against q: the other components grow at most max_growth times
+  const Sym3 small{-1.0, -1.0, -1.0, 0.0, 0.5, 0.0};
+  const Sym3 sd = one_grain_above(small, rho, dz).stress(G_DOWN, WallSums::RATIO);
+  EXPECT_NEAR(sd.zz, small.zz - q, 1e-9);
+  EXPECT_NEAR(sd.xz, (1.0 + WallSums::max_growth) * small.xz, 1e-12);
+
+  const double g_up[3] = {0.0, 0.0, 9.81};
+  const Sym3 sk = Sym3::iso(-100.0);
+  const Sym3 ceiling = one_grain_above(sk, rho, dz).stress(g_up, WallSums::RATIO);
+  EXPECT_LE(ceiling.zz, 1e-12);
+  EXPECT_GE(ceiling.zz, sk.zz);
+  EXPECT_EQ(WallSums::zero().stress(G_DOWN, WallSums::RATIO).zz, 0.0);
 }

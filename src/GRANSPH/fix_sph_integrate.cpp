@@ -57,6 +57,15 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
         cfl = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
         if (cfl <= 0.0 || cfl > 1.0) error->all(FLERR, "{}: cfl must be in (0, 1] or none", style_name);
       }
+    } else if (key == "matching") {
+      if (strcmp(style, "sph/elastoplastic") != 0 && strcmp(style, "sph/elastoplastic/kk") != 0)
+        error->all(FLERR, "{}: keyword matching is for fix sph/elastoplastic only", style_name);
+      if (strcmp(arg[iarg + 1], "plane_strain") == 0)
+        material.dp_matching = GranSPHMaterial::PLANE_STRAIN;
+      else if (strcmp(arg[iarg + 1], "simple_shear") == 0)
+        material.dp_matching = GranSPHMaterial::SIMPLE_SHEAR;
+      else
+        error->all(FLERR, "{}: matching must be plane_strain or simple_shear", style_name);
     } else if (key == "geostatic") {
       geostatic_flag = 1;
       surface_height = utils::numeric(FLERR, arg[iarg + 1], false, lmp);

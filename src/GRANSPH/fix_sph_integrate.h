@@ -20,9 +20,10 @@ namespace LAMMPS_NS {
 class FixSPHIntegrate : public Fix {
  public:
   // Columns of the per-atom arrays. STATE is restarted and is the fix's per-atom
-  // output (f_ID[1] = rho, f_ID[2..7] = stress, f_ID[8] = GRANSPH::Regime); its
+  // output (f_ID[1] = rho, f_ID[2..7] = stress, f_ID[8] = GRANSPH::Regime,
+  // f_ID[9] = the pressure the artificial viscosity adds, from the pair style); its
   // first NCOMM columns are forward-communicated to ghosts.
-  enum { RHO = 0, SIGMA = 1, REGIME = 7, NSTATE = 8, NCOMM = 7 };
+  enum { RHO = 0, SIGMA = 1, REGIME = 7, VISC_PRESSURE = 8, NSTATE = 9, NCOMM = 7 };
   enum { DRHO = 0, STRAIN = 1, SPIN = 7, NRATES = 10 };
   enum { V_START = 0, RHO_START = 3, SIGMA_START = 4, WALL_V = 10, NSTART = 13 };
 

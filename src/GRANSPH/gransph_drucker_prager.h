@@ -19,21 +19,25 @@ struct DruckerPrager {
   double k_c;           // eq. 31
   double sin_psi;       // dilatancy angle
 
-  // Plane-strain matching of Bui et al.: friction angle phi and dilatancy psi in
-  // radians, cohesion c.
+  // alpha_phi and k_c from friction angle phi and dilatancy psi (radians) and cohesion c:
+  // Bui et al.'s plane-strain matching (eqs. 30-31, the paper's), under which a layer in
+  // simple shear yields at tan(theta) = 3 alpha_phi (29.6 deg for phi = 37 deg), or the
+  // matching whose simple-shear strength is c + tan(phi) sigma_n (with psi = 0 the flow
+  // is coaxial and deviatoric, so the normal stresses are equal in steady simple shear).
   KOKKOS_INLINE_FUNCTION static DruckerPrager from_material(double E, double nu, double phi,
-                                                            double psi, double c)
+                                                            double psi, double c,
+                                                            bool simple_shear = false)
   {
     const double tphi = tan(phi);
-    const double root = sqrt(9.0 + 12.0 * tphi * tphi);
-    return {E / (3.0 * (1.0 - 2.0 * nu)), E / (2.0 * (1.0 + nu)), tphi / root, 3.0 * c / root,
-            sin(psi)};
+    const double root = simple_shear ? 3.0 : sqrt(9.0 + 12.0 * tphi * tphi);
+    return {E / (3.0 * (1.0 - 2.0 * nu)), E / (2.0 * (1.0 + nu)), tphi / root,
+            (simple_shear ? 1.0 : 3.0 / root) * c, sin(psi)};
   }
 
-  // from a material record with E, nu, phi, psi, c (host)
+  // from a material record with E, nu, phi, psi, c and dp_matching (host)
   template <class Material> static DruckerPrager from(const Material &m)
   {
-    return from_material(m.E, m.nu, m.phi, m.psi, m.c);
+    return from_material(m.E, m.nu, m.phi, m.psi, m.c, m.dp_matching == Material::SIMPLE_SHEAR);
   }
 
   KOKKOS_INLINE_FUNCTION double yield_function(const Sym3 &s) const

@@ -44,6 +44,16 @@ struct WendlandC2 {
     const double t = 1.0 - 0.5 * q;
     return grad_norm * t * t * t;
   }
+
+  // W and F (as grad_factor) from one sqrt, for r < 2h
+  KOKKOS_INLINE_FUNCTION void w_and_grad_factor(double rsq, double &w, double &f) const
+  {
+    const double q = sqrt(rsq) * inv_h;
+    const double t = 1.0 - 0.5 * q;
+    const double t3 = t * t * t;
+    w = w_norm * t3 * t * (2.0 * q + 1.0);
+    f = grad_norm * t3;
+  }
 };
 
 }    // namespace GRANSPH

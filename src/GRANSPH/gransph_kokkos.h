@@ -35,7 +35,7 @@ template <class DeviceType> struct DeviceParticles {
   typename AT::t_int_1d_randomread numneigh, mask;
   int granularbit, wallbit;
   GRANSPH::WendlandC2 kernel;
-  double alpha, beta;
+  GRANSPH::Viscosity visc;
 
   KOKKOS_INLINE_FUNCTION int num_neighbours(int i) const { return numneigh(i); }
   KOKKOS_INLINE_FUNCTION int neighbour(int i, int k) const { return neighbors(i, k) & NEIGHMASK; }

@@ -24,6 +24,11 @@ struct GranSPHMaterial {
   double mu_s;     // static friction coefficient
   double mu_2;     // limiting friction coefficient
 
+  // How Drucker-Prager's alpha_phi and k_c are matched to phi and c (not in the
+  // file: fix sph/elastoplastic's keyword matching)
+  enum Matching { PLANE_STRAIN, SIMPLE_SHEAR };
+  Matching dp_matching = PLANE_STRAIN;
+
   double bulk_modulus() const { return E / (3.0 * (1.0 - 2.0 * nu)); }
   double shear_modulus() const { return E / (2.0 * (1.0 + nu)); }
 

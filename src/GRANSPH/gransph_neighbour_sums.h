@@ -6,7 +6,7 @@
      int    num_neighbours(int i), neighbour(int i, int k)  (masked)
      const GRANSPH::PairParticle &particle(int i)
      bool   granular(int i), wall(int i)
-     GRANSPH::WendlandC2 kernel; double alpha, beta   (Monaghan viscosity)
+     GRANSPH::WendlandC2 kernel; GRANSPH::Viscosity visc
 
    Over a full neighbour list (the Kokkos styles: no atomics) each loop runs
    over one particle i and writes only to i. Over a half list with newton off
@@ -34,27 +34,33 @@ KOKKOS_INLINE_FUNCTION void add_pair_virial(double *vir, const double *dx, const
 }
 
 // What a pair i-j inside the kernel support shares with every term:
-// dx = x_i - x_j, dv = v_i - v_j, grad_i W_ij and the viscosity Pi_ij (eq. 7).
+// dx = x_i - x_j, dv = v_i - v_j, W_ij, grad_i W_ij and the viscosity Pi_ij (eq. 7).
 struct PairGeometry {
   double dx[3], dv[3], gradw[3];
-  double visc;
+  double w, visc;
+
+  KOKKOS_INLINE_FUNCTION PairTerms terms(const PairParticle &pi, const PairParticle &pj) const
+  {
+    return PairTerms::make(pi, pj, dx, dv, gradw, w, visc);
+  }
 };
 
-// Fills g for the pair pi-pj; false if pj is outside the support. A neighbour on top
-// of pi (r = 0) has grad W = 0 and Pi = 0, so it adds nothing.
+// Fills g for the pair pi-pj, with the viscosity if `viscous`; false if pj is outside
+// the support. A neighbour on top of pi (r = 0) has grad W = 0 and Pi = 0.
 template <class Particles>
 KOKKOS_INLINE_FUNCTION bool pair_geometry(const Particles &p, const PairParticle &pi,
-                                          const PairParticle &pj, PairGeometry &g)
+                                          const PairParticle &pj, bool viscous, PairGeometry &g)
 {
   for (int a = 0; a < 3; ++a) g.dx[a] = pi.x[a] - pj.x[a];
   const double rsq = g.dx[0] * g.dx[0] + g.dx[1] * g.dx[1] + g.dx[2] * g.dx[2];
   if (rsq >= p.kernel.cutsq()) return false;
-  const double fw = p.kernel.grad_factor(rsq);
+  double fw;
+  p.kernel.w_and_grad_factor(rsq, g.w, fw);
   for (int a = 0; a < 3; ++a) {
     g.dv[a] = pi.v[a] - pj.v[a];
     g.gradw[a] = fw * g.dx[a];
   }
-  g.visc = monaghan_viscosity(g.dx, g.dv, rsq, p.kernel.h, p.alpha, p.beta, pi, pj);
+  g.visc = viscous ? monaghan_viscosity(g.dx, g.dv, rsq, p.kernel.h, p.visc, pi, pj) : 0.0;
   return true;
 }
 
@@ -70,8 +76,8 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     if (!p.granular(j) && !p.wall(j)) continue;
     const PairParticle &pj = p.particle(j);
     PairGeometry g;
-    if (!pair_geometry(p, pi, pj, g)) continue;
-    const PairTerms t = PairTerms::make(pi, pj, g.dv, g.gradw, g.visc);
+    if (!pair_geometry(p, pi, pj, p.granular(j) || p.visc.walls, g)) continue;
+    const PairTerms t = g.terms(pi, pj);
     r.add(t, pj, 1.0);
     if (vir) {
       const double mm = pi.mass * pj.mass;
@@ -112,7 +118,7 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
     if (!p.granular(j)) continue;
     const PairParticle &pj = p.particle(j);
     PairGeometry g;
-    if (!pair_geometry(p, pd, pj, g)) continue;
+    if (!pair_geometry(p, pd, pj, p.visc.walls, g)) continue;
     double tg[3];
     stress_gradient(pd, pj, g.visc, g.gradw, tg);
     const double mm = pd.mass * pj.mass;
@@ -168,8 +174,8 @@ KOKKOS_INLINE_FUNCTION void add_pair_rates(const Particles &p, int i, int nlocal
     if (!p.granular(j) && !(i_granular && p.wall(j))) continue;
     const PairParticle &pj = p.particle(j);
     PairGeometry g;
-    if (!pair_geometry(p, pi, pj, g)) continue;
-    const PairTerms t = PairTerms::make(pi, pj, g.dv, g.gradw, g.visc);
+    if (!pair_geometry(p, pi, pj, (i_granular && p.granular(j)) || p.visc.walls, g)) continue;
+    const PairTerms t = g.terms(pi, pj);
     ri.add(t, pj, 1.0);
     if (j < nlocal) rates[j].add(t, pi, -1.0);
     if (want_virial) {

@@ -12,26 +12,40 @@
 
 namespace GRANSPH {
 
-// Sound speed of the paper, c = sqrt(E / rho) (eq. 19; LOQUAT uses sqrt(K / rho)).
+// Sound speed of the paper, c = sqrt(E / rho) (eq. 19).
 KOKKOS_INLINE_FUNCTION double sound_speed(double E, double rho)
 {
   return sqrt(E / rho);
 }
+
+// The artificial viscosity of eq. 7 as the pair style is set: alpha, beta, whether it
+// acts between grains and dummy wall particles, and the sound speed it uses.
+struct Viscosity {
+  enum Sound { PAPER, BULK };    // c = sqrt(E / rho) (eq. 19), or c0 = sqrt(K / rho0)
+  double alpha, beta;
+  bool walls;
+  Sound sound;
+  double c0;    // sqrt(K / rho0) of the material
+
+  KOKKOS_INLINE_FUNCTION double sound_speed(double E, double rho) const
+  {
+    return sound == BULK ? c0 : GRANSPH::sound_speed(E, rho);
+  }
+};
 
 // What a particle brings to its pair interactions, set once per evaluation so
 // that a pair needs no division or sqrt for it. Two cache lines: a neighbour's
 // position and velocity (the cut-off test, the viscosity) come in the first.
 struct alignas(64) PairParticle {
   double x[3], v[3];
-  double rho, c;    // density and sound speed
+  double rho, c;    // density and the sound speed of the viscosity
   Sym3 sigma;
   double mass, inv_rho;
 
   KOKKOS_INLINE_FUNCTION static PairParticle make(const double *x, const double *v, double mass,
-                                                  double rho, const Sym3 &sigma, double E)
+                                                  double rho, const Sym3 &sigma, double c)
   {
-    return {{x[0], x[1], x[2]}, {v[0], v[1], v[2]}, rho, sound_speed(E, rho), sigma, mass,
-            1.0 / rho};
+    return {{x[0], x[1], x[2]}, {v[0], v[1], v[2]}, rho, c, sigma, mass, 1.0 / rho};
   }
 };
 
@@ -41,7 +55,7 @@ struct alignas(64) PairParticle {
 // loops could not predict), gives Pi = 0 for the others. (-alpha c_ij phi_ij + beta phi_ij^2) / rho_ij with
 // phi_ij = h v.x / d, d = r^2 + 0.01 h^2, is taken over one denominator.
 KOKKOS_INLINE_FUNCTION double monaghan_viscosity(const double *dx, const double *dv, double rsq,
-                                                 double h, double alpha, double beta,
+                                                 double h, const Viscosity &visc,
                                                  const PairParticle &pi, const PairParticle &pj)
 {
   const double vdotx = dv[0] * dx[0] + dv[1] * dx[1] + dv[2] * dx[2];
@@ -49,7 +63,7 @@ KOKKOS_INLINE_FUNCTION double monaghan_viscosity(const double *dx, const double 
   const double d = rsq + 0.01 * h * h;
   const double c_ij = 0.5 * (pi.c + pj.c);
   const double rho_ij = 0.5 * (pi.rho + pj.rho);
-  return hv * (beta * hv - alpha * c_ij * d) / (d * d * rho_ij);
+  return hv * (visc.beta * hv - visc.alpha * c_ij * d) / (d * d * rho_ij);
 }
 
 // Eq. 6b's bracket applied to grad_i W, ((s_i + s_j)/(rho_i rho_j) - Pi_ij I) grad_i W:
@@ -68,31 +82,63 @@ KOKKOS_INLINE_FUNCTION void stress_gradient(const PairParticle &pi, const PairPa
 
 // What pair i-j adds to the rates of either particle, computed once for both.
 struct PairTerms {
-  double dv[3], gradw[3];    // v_i - v_j, grad_i W_ij
-  double dv_gradw;           // v_ij . grad_i W_ij = v_ji . grad_j W_ji
-  double tg[3];              // stress_gradient()
+  double dx[3], dv[3], gradw[3];    // x_i - x_j, v_i - v_j, grad_i W_ij
+  double dv_gradw;                  // v_ij . grad_i W_ij = v_ji . grad_j W_ji
+  double tg[3];                     // stress_gradient()
+  double w;                         // W_ij
+  double visc_pressure;             // rho_i rho_j Pi_ij / 2, the pressure Pi_ij stands for
 
   KOKKOS_INLINE_FUNCTION static PairTerms make(const PairParticle &pi, const PairParticle &pj,
-                                               const double *dv, const double *gradw, double visc)
+                                               const double *dx, const double *dv,
+                                               const double *gradw, double w, double visc)
   {
-    PairTerms t{{dv[0], dv[1], dv[2]},
+    PairTerms t{{dx[0], dx[1], dx[2]},
+                {dv[0], dv[1], dv[2]},
                 {gradw[0], gradw[1], gradw[2]},
                 dv[0] * gradw[0] + dv[1] * gradw[1] + dv[2] * gradw[2],
-                {0.0, 0.0, 0.0}};
+                {0.0, 0.0, 0.0},
+                w,
+                0.5 * pi.rho * pj.rho * visc};
     stress_gradient(pi, pj, visc, gradw, t.tg);
     return t;
   }
 };
+
+// Inverse of a symmetric matrix; false (and inv untouched) if its determinant is
+// below det_min.
+KOKKOS_INLINE_FUNCTION bool invert(const Sym3 &m, double det_min, double inv[3][3])
+{
+  const double c_xx = m.yy * m.zz - m.yz * m.yz, c_xy = m.xz * m.yz - m.xy * m.zz,
+               c_xz = m.xy * m.yz - m.xz * m.yy;
+  const double det = m.xx * c_xx + m.xy * c_xy + m.xz * c_xz;
+  if (!(det >= det_min)) return false;
+  const double r = 1.0 / det;
+  inv[0][0] = r * c_xx;
+  inv[0][1] = inv[1][0] = r * c_xy;
+  inv[0][2] = inv[2][0] = r * c_xz;
+  inv[1][1] = r * (m.xx * m.zz - m.xz * m.xz);
+  inv[1][2] = inv[2][1] = r * (m.xy * m.xz - m.xx * m.yz);
+  inv[2][2] = r * (m.xx * m.yy - m.xy * m.xy);
+  return true;
+}
 
 // Rates of a particle accumulated over its neighbours.
 struct ParticleRates {
   double drho;            // eq. 6a
   double acc[3];          // eq. 6b
   double grad_v[3][3];    // velocity gradient dv_a/dx_b, sum_j m_j/rho_j v_ji (x) grad_i W_ij
+  Sym3 shape;             // sum_j m_j/rho_j x_ji (x) grad_i W_ij: I inside the material
+  double w_sum;           // sum_j m_j/rho_j W_ij
+  double visc_w;          // sum_j m_j/rho_j W_ij rho_i rho_j Pi_ij / 2
+
+  // Below this determinant of `shape` (the full-support value is 1; a flat free
+  // surface has about 0.5) a particle has too few neighbours for the correction.
+  static constexpr double det_min = 0.1;
 
   KOKKOS_INLINE_FUNCTION static ParticleRates zero()
   {
-    return {0.0, {0.0, 0.0, 0.0}, {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}};
+    return {0.0, {0.0, 0.0, 0.0}, {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
+            Sym3::zero(), 0.0, 0.0};
   }
 
   // the terms of a pair with `other`: side +1 for i, -1 for j (grad_j W = -grad_i W)
@@ -100,10 +146,16 @@ struct ParticleRates {
   {
     drho += other.mass * t.dv_gradw;
     for (int a = 0; a < 3; ++a) acc[a] += side * other.mass * t.tg[a];
-    // v_ji (x) grad_i W = v_ij (x) grad_j W = -dv (x) gradw, weighted by the volume m/rho
-    const double s = -other.mass * other.inv_rho;
+    // v_ji (x) grad_i W = v_ij (x) grad_j W = -dv (x) gradw, weighted by the volume m/rho;
+    // the same for x_ji, and dx (x) gradw is symmetric (gradw is parallel to dx)
+    const double volume = other.mass * other.inv_rho, s = -volume;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) grad_v[a][b] += s * t.dv[a] * t.gradw[b];
+    shape = shape +
+        s * Sym3{t.dx[0] * t.gradw[0], t.dx[1] * t.gradw[1], t.dx[2] * t.gradw[2],
+                 t.dx[0] * t.gradw[1], t.dx[0] * t.gradw[2], t.dx[1] * t.gradw[2]};
+    w_sum += volume * t.w;
+    visc_w += volume * t.w * t.visc_pressure;
   }
 
   KOKKOS_INLINE_FUNCTION void add(const ParticleRates &r)
@@ -113,6 +165,34 @@ struct ParticleRates {
       acc[a] += r.acc[a];
       for (int b = 0; b < 3; ++b) grad_v[a][b] += r.grad_v[a][b];
     }
+    shape = shape + r.shape;
+    w_sum += r.w_sum;
+    visc_w += r.visc_w;
+  }
+
+  // Renormalised velocity gradient grad_v shape^-1 (Randles & Libersky 1996; Bonet &
+  // Lok 1999): exact for a linear velocity field also where the support is cut by a
+  // free surface. A particle with too few neighbours keeps the plain gradient.
+  KOKKOS_INLINE_FUNCTION void correct_gradient(int dim)
+  {
+    Sym3 m = shape;
+    if (dim == 2) {
+      m.zz = 1.0;
+      m.xz = m.yz = 0.0;
+    }
+    double inv[3][3];
+    if (!invert(m, det_min, inv)) return;
+    for (int a = 0; a < 3; ++a) {
+      const double g[3] = {grad_v[a][0], grad_v[a][1], grad_v[a][2]};
+      for (int b = 0; b < 3; ++b) grad_v[a][b] = g[0] * inv[0][b] + g[1] * inv[1][b] + g[2] * inv[2][b];
+    }
+  }
+
+  // Kernel-weighted mean over the neighbours of the pressure that the artificial
+  // viscosity adds (the diagnostic to compare with the granular stress)
+  KOKKOS_INLINE_FUNCTION double viscous_pressure() const
+  {
+    return w_sum > 0.0 ? visc_w / w_sum : 0.0;
   }
 
   // strain-rate tensor, eq. 34: the symmetric part of grad_v
@@ -131,10 +211,26 @@ struct ParticleRates {
   }
 };
 
-// Dummy-particle stress, eq. 8 (Adami et al. 2012 generalised to a tensor):
-// sigma_d = (sum_k sigma_k W_dk - ((g - a_d) . sum_k rho_k r_dk W_dk) I) / sum_k W_dk,
-// with r_dk = x_d - x_k pointing from the granular particle k to the dummy d.
+// Dummy-particle stress, eq. 8 (Adami et al. 2012 generalised to a tensor): the grains'
+// stress extrapolated to dummy particle d, sigma_e = sum_k sigma_k W_dk / sum_k W_dk, and
+// the weight of the grains between them, from R = sum_k rho_k r_dk W_dk / sum_k W_dk with
+// r_dk = x_d - x_k pointing from grain k to the dummy. Two ways to add the weight
+// (pair_style keyword wall/stress):
+//   PAPER  eq. 8 in index form, sigma_d^aa = sigma_e^aa - (g - a_d)^a R^a with no sum
+//          over a: each normal component gets its own direction's term (gravity along z:
+//          sigma_zz only).
+//   RATIO  the normal stress on the wall, n.sigma.n with n = R / |R|, grows by all of
+//          q = (g - a_d) . R, and the other components in proportion: the dummies carry
+//          the grains' stress ratio (their mobilised friction) at the wall's pressure.
+//          Under PAPER the wall's shear stress is only the grains', against a normal stress
+//          raised by q, so a layer whose own stress is small against q (a few particles
+//          thick) feels a fraction of its friction at the wall.
 struct WallSums {
+  enum Mode { PAPER, RATIO };
+  // RATIO: the other components grow at most this many times their extrapolated value
+  // where the grains' normal stress is small against q (stress-free grains landing)
+  static constexpr double max_growth = 4.0;
+
   Sym3 sigma_w;
   double rho_r_w[3];
   double w;
@@ -153,12 +249,26 @@ struct WallSums {
 
   // g_minus_a = g - a_d (see wall_gravity); a dummy particle without granular
   // neighbours is stress-free
-  KOKKOS_INLINE_FUNCTION Sym3 stress(const double *g_minus_a) const
+  KOKKOS_INLINE_FUNCTION Sym3 stress(const double *g_minus_a, Mode mode) const
   {
     if (w <= 0.0) return Sym3::zero();
-    const double hydro =
-        g_minus_a[0] * rho_r_w[0] + g_minus_a[1] * rho_r_w[1] + g_minus_a[2] * rho_r_w[2];
-    return (1.0 / w) * (sigma_w - Sym3::iso(hydro));
+    const double inv_w = 1.0 / w;
+    const Sym3 sigma_e = inv_w * sigma_w;
+    const double r[3] = {inv_w * rho_r_w[0], inv_w * rho_r_w[1], inv_w * rho_r_w[2]};
+    if (mode == PAPER)
+      return sigma_e -
+          Sym3{g_minus_a[0] * r[0], g_minus_a[1] * r[1], g_minus_a[2] * r[2], 0.0, 0.0, 0.0};
+    const double r_len = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    if (r_len == 0.0) return sigma_e;
+    const double n[3] = {r[0] / r_len, r[1] / r_len, r[2] / r_len};
+    const Sym3 nn{n[0] * n[0], n[1] * n[1], n[2] * n[2], n[0] * n[1], n[0] * n[2], n[1] * n[2]};
+    const double sigma_nn = sigma_e.ddot(nn);
+    // no tension on the wall from a negative q (a wall above the grains)
+    const double q = fmax(g_minus_a[0] * r[0] + g_minus_a[1] * r[1] + g_minus_a[2] * r[2],
+                          fmin(sigma_nn, 0.0));
+    const double base = fmax(-sigma_nn, fabs(q) / max_growth);
+    const double growth = base > 0.0 ? q / base : 0.0;
+    return sigma_e + growth * (sigma_e - sigma_nn * nn) - q * nn;
   }
 };
 

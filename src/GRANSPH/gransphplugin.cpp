@@ -6,6 +6,7 @@
 #include "lammpsplugin.h"
 #include "version.h"
 
+#include "compute_sph_runout.h"
 #include "compute_sph_stress_atom.h"
 #include "compute_sph_wallforce.h"
 #include "fix_sph_elastoplastic.h"
@@ -102,6 +103,9 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   register_style(reg, lmp, handle, "compute", "sph/stress/atom",
                  "GRANSPH: per-atom p, q, principal stresses, Lode angle, mobilised strength",
                  (void *) &compute_creator<ComputeSPHStressAtom>, true);
+  register_style(reg, lmp, handle, "compute", "sph/runout",
+                 "GRANSPH: deposit edge, skirt and height from the thickness profile",
+                 (void *) &compute_creator<ComputeSPHRunout>, true);
 
   register_kokkos_style(reg, lmp, handle, "pair",
                         {"sph/granular/kk", "sph/granular/kk/device", "sph/granular/kk/host"},

@@ -37,7 +37,7 @@ struct HostParticles {
   const int *numneigh, *mask;
   int granularbit, wallbit;
   GRANSPH::WendlandC2 kernel;
-  double alpha, beta;
+  GRANSPH::Viscosity visc;
 
   int num_neighbours(int i) const { return numneigh[i]; }
   int neighbour(int i, int k) const { return firstneigh[i][k] & NEIGHMASK; }
@@ -51,8 +51,9 @@ struct HostParticles {
 /* ---------------------------------------------------------------------- */
 
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
-    Pair(lmp), h(0.0), alpha(1.0), beta(1.0), integrator(nullptr), nmax(0), particles(nullptr),
-    wall_sums(nullptr), rates(nullptr)
+    Pair(lmp), h(0.0), visc{DEFAULT_ALPHA, DEFAULT_BETA, false, GRANSPH::Viscosity::BULK, 0.0},
+    corrected_gradient(0), wall_stress_mode(GRANSPH::WallSums::RATIO), integrator(nullptr),
+    nmax(0), particles(nullptr), wall_sums(nullptr), rates(nullptr)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -82,7 +83,7 @@ void PairSPHGranular::compute(int eflag, int vflag)
   if (nall > nmax) grow(atom->nmax);
   pack_particles(0, nall);
   const HostParticles p{particles, list->firstneigh, list->numneigh, atom->mask, fix.groupbit,
-                        fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), alpha, beta};
+                        fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), visc};
   if (fix.wallbit) {
     wall_stresses(p);
     fix.forward_comm_state();
@@ -110,7 +111,7 @@ template <class Particles> void PairSPHGranular::wall_stresses(const Particles &
     if (!p.wall(d)) continue;
     double g_minus_a[3];
     GRANSPH::wall_gravity(g, v[d], &fix.start[d][FixSPHIntegrate::WALL_V], inv_dt, g_minus_a);
-    particles[d].sigma = wall_sums[d].stress(g_minus_a);
+    particles[d].sigma = wall_sums[d].stress(g_minus_a, wall_stress_mode);
     particles[d].sigma.store(&fix.state[d][FixSPHIntegrate::SIGMA]);
   }
 }
@@ -130,11 +131,14 @@ template <class Particles> void PairSPHGranular::rates_and_forces(const Particle
     GRANSPH::add_pair_rates(p, ilist[ii], nlocal, rates, vflag_either, tally);
 
   double **f = atom->f;
+  const int dim = domain->dimension;
   for (int i = 0; i < nlocal; ++i) {
     if (!p.granular(i) && !p.wall(i)) continue;
-    const GRANSPH::ParticleRates &r = rates[i];
+    GRANSPH::ParticleRates &r = rates[i];
     for (int a = 0; a < 3; ++a) f[i][a] += particles[i].mass * r.acc[a] / force->ftm2v;
     if (!p.granular(i)) continue;
+    if (corrected_gradient) r.correct_gradient(dim);
+    fix.state[i][FixSPHIntegrate::VISC_PRESSURE] = r.viscous_pressure();
     double *fix_rates = fix.rates[i];
     fix_rates[FixSPHIntegrate::DRHO] = r.drho;
     r.strain().store(&fix_rates[FixSPHIntegrate::STRAIN]);
@@ -165,13 +169,20 @@ void PairSPHGranular::pack_particles(int from, int to)
     if (!(atom->mask[i] & sphbits)) continue;
     const double m = atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
     const double *state = fix.state[i];
-    particles[i] = PairParticle::make(atom->x[i], atom->v[i], m, state[FixSPHIntegrate::RHO],
-                                      Sym3::load(&state[FixSPHIntegrate::SIGMA]), E);
+    const double rho = state[FixSPHIntegrate::RHO];
+    particles[i] = PairParticle::make(atom->x[i], atom->v[i], m, rho,
+                                      Sym3::load(&state[FixSPHIntegrate::SIGMA]),
+                                      visc.sound_speed(E, rho));
   }
 }
 
 /* ----------------------------------------------------------------------
-   pair_style sph/granular h [visc alpha beta]
+   pair_style sph/granular h keyword value ...
+     visc alpha beta          Monaghan viscosity coefficients (eq. 7)
+     visc/sound paper|bulk    its sound speed: sqrt(E/rho) (eq. 19) or sqrt(K/rho0)
+     visc/walls yes|no        whether it acts between grains and dummy particles
+     gradient plain|corrected the velocity gradient of eqs. 34-35, or renormalised
+     wall/stress paper|ratio  how eq. 8 adds the grains' weight to the dummies
 ------------------------------------------------------------------------- */
 
 void PairSPHGranular::settings(int narg, char **arg)
@@ -179,17 +190,43 @@ void PairSPHGranular::settings(int narg, char **arg)
   if (narg < 1) error->all(FLERR, "Illegal pair_style sph/granular command: need h");
   h = utils::numeric(FLERR, arg[0], false, lmp);
   if (h <= 0.0) error->all(FLERR, "Pair style sph/granular: smoothing length h must be > 0");
+  // one of the words in `choices`, whose index it returns
+  auto choice = [&](int iarg, std::initializer_list<const char *> choices) {
+    if (iarg + 2 > narg) error->all(FLERR, "Pair style sph/granular: {} needs a value", arg[iarg]);
+    int index = 0;
+    for (const char *c : choices) {
+      if (strcmp(arg[iarg + 1], c) == 0) return index;
+      ++index;
+    }
+    error->all(FLERR, "Pair style sph/granular: unknown value {} of keyword {}", arg[iarg + 1],
+               arg[iarg]);
+    return -1;
+  };
   int iarg = 1;
   while (iarg < narg) {
-    if (strcmp(arg[iarg], "visc") == 0) {
+    const std::string key = arg[iarg];
+    if (key == "visc") {
       if (iarg + 3 > narg) error->all(FLERR, "Pair style sph/granular: visc needs alpha and beta");
-      alpha = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      beta = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
-      if (alpha < 0.0 || beta < 0.0)
+      visc.alpha = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      visc.beta = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      if (visc.alpha < 0.0 || visc.beta < 0.0)
         error->all(FLERR, "Pair style sph/granular: visc alpha and beta must be >= 0");
       iarg += 3;
-    } else
-      error->all(FLERR, "Pair style sph/granular: unknown keyword {}", arg[iarg]);
+      continue;
+    }
+    if (key == "visc/sound")
+      visc.sound = choice(iarg, {"paper", "bulk"}) ? GRANSPH::Viscosity::BULK
+                                                   : GRANSPH::Viscosity::PAPER;
+    else if (key == "visc/walls")
+      visc.walls = choice(iarg, {"no", "yes"}) == 1;
+    else if (key == "gradient")
+      corrected_gradient = choice(iarg, {"plain", "corrected"});
+    else if (key == "wall/stress")
+      wall_stress_mode =
+          choice(iarg, {"paper", "ratio"}) ? GRANSPH::WallSums::RATIO : GRANSPH::WallSums::PAPER;
+    else
+      error->all(FLERR, "Pair style sph/granular: unknown keyword {}", key);
+    iarg += 2;
   }
 }
 
@@ -231,6 +268,7 @@ void PairSPHGranular::init_style()
     error->all(FLERR,
                "Pair style sph/granular needs a GRANSPH integrator (fix sph/elastoplastic or "
                "fix sph/phasechange)");
+  visc.c0 = sqrt(integrator->material.bulk_modulus() / integrator->material.rho0);
   // a half list without Newton's third law across ranks: no reverse communication of
   // the rates (a pair with a ghost is computed on both ranks)
   const int irequest = neighbor->request(this, instance_me);
@@ -263,23 +301,32 @@ void PairSPHGranular::read_restart(FILE *fp)
     }
 }
 
+// the settings as h, alpha, beta, then the choices as whole numbers
 void PairSPHGranular::write_restart_settings(FILE *fp)
 {
-  fwrite(&h, sizeof(double), 1, fp);
-  fwrite(&alpha, sizeof(double), 1, fp);
-  fwrite(&beta, sizeof(double), 1, fp);
+  const double values[3] = {h, visc.alpha, visc.beta};
+  const int choices[4] = {visc.sound, visc.walls, corrected_gradient, wall_stress_mode};
+  fwrite(values, sizeof(double), 3, fp);
+  fwrite(choices, sizeof(int), 4, fp);
 }
 
 void PairSPHGranular::read_restart_settings(FILE *fp)
 {
+  double values[3];
+  int choices[4];
   if (comm->me == 0) {
-    utils::sfread(FLERR, &h, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &alpha, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &beta, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, values, sizeof(double), 3, fp, nullptr, error);
+    utils::sfread(FLERR, choices, sizeof(int), 4, fp, nullptr, error);
   }
-  MPI_Bcast(&h, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&alpha, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&beta, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(values, 3, MPI_DOUBLE, 0, world);
+  MPI_Bcast(choices, 4, MPI_INT, 0, world);
+  h = values[0];
+  visc.alpha = values[1];
+  visc.beta = values[2];
+  visc.sound = static_cast<GRANSPH::Viscosity::Sound>(choices[0]);
+  visc.walls = choices[1] != 0;
+  corrected_gradient = choices[2];
+  wall_stress_mode = static_cast<GRANSPH::WallSums::Mode>(choices[3]);
 }
 
 void *PairSPHGranular::extract(const char *name, int &dim)

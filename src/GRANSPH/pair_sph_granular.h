@@ -14,11 +14,7 @@ PairStyle(sph/granular,PairSPHGranular);
 
 #include "pair.h"
 
-namespace GRANSPH {
-struct PairParticle;
-struct ParticleRates;
-struct WallSums;
-}
+#include "gransph_pair_terms.h"
 
 namespace LAMMPS_NS {
 
@@ -40,9 +36,14 @@ class PairSPHGranular : public Pair {
   void *extract(const char *, int &) override;
 
  protected:
-  double h;              // smoothing length; the kernel support is 2h
-  double alpha, beta;    // Monaghan viscosity coefficients, eq. 7
+  double h;                                   // smoothing length; the kernel support is 2h
+  GRANSPH::Viscosity visc;                    // eq. 7
+  int corrected_gradient;                     // renormalise the velocity gradient
+  GRANSPH::WallSums::Mode wall_stress_mode;   // eq. 8
   FixSPHIntegrate *integrator;
+
+  // defaults of visc, chosen by the convergence study (doc/pair_sph_granular.rst)
+  static constexpr double DEFAULT_ALPHA = 0.25, DEFAULT_BETA = 0.0;
 
   void allocate();
 

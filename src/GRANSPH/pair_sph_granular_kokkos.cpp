@@ -98,8 +98,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   p.granularbit = fix.groupbit;
   p.wallbit = fix.wallbit;
   p.kernel = GRANSPH::WendlandC2::make(h, domain->dimension);
-  p.alpha = alpha;
-  p.beta = beta;
+  p.visc = visc;
 
   if (fix.wallbit) {
     walls(p, kk);
@@ -110,6 +109,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   }
   grains(p, kk);
   kk.k_rates.template modify<DeviceType>();
+  kk.k_state.template modify<DeviceType>();
   atomKK->modified(execution_space, datamask_modify);
   if (vflag_atom) {
     k_vatom.template modify<DeviceType>();
@@ -133,6 +133,7 @@ void PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int f
   const int sphbits = integrator->groupbit | integrator->wallbit;
   const int use_rmass = atom->rmass != nullptr;
   const double E = integrator->material.E;
+  const GRANSPH::Viscosity visc = this->visc;
   Kokkos::parallel_for(
       Kokkos::RangePolicy<DeviceType>(from, to), LAMMPS_LAMBDA(const int i) {
         if (!(mask(i) & sphbits)) return;
@@ -141,8 +142,9 @@ void PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int f
         const GRANSPH::Sym3 sigma{state(i, FSI::SIGMA),     state(i, FSI::SIGMA + 1),
                                   state(i, FSI::SIGMA + 2), state(i, FSI::SIGMA + 3),
                                   state(i, FSI::SIGMA + 4), state(i, FSI::SIGMA + 5)};
+        const double rho = state(i, FSI::RHO);
         particles(i) = GRANSPH::PairParticle::make(xi, vi, use_rmass ? rmass(i) : mass(type(i)),
-                                                   state(i, FSI::RHO), sigma, E);
+                                                   rho, sigma, visc.sound_speed(E, rho));
       });
 }
 
@@ -165,6 +167,7 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
   integrator->gravity_vector(g);
   const double gx = g[0], gy = g[1], gz = g[2];
   const double inv_dt = update->setupflag ? 0.0 : 1.0 / update->dt;
+  const GRANSPH::WallSums::Mode mode = wall_stress_mode;
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
       ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
@@ -175,7 +178,7 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
         double g_minus_a[3];
         GRANSPH::wall_gravity(gd, particles(d).v, &start(d, FSI::WALL_V), inv_dt, g_minus_a);
         const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
-        particles(d).sigma = sums.stress(g_minus_a);
+        particles(d).sigma = sums.stress(g_minus_a, mode);
         particles(d).sigma.store(&state(d, FSI::SIGMA));
         if (!sums.has_neighbours()) return;
         double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
@@ -196,10 +199,12 @@ void PairSPHGranularKokkos<DeviceType>::grains(const DeviceParticles<DeviceType>
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
   auto rates = kk.k_rates.template view<DeviceType>();
+  auto state = kk.k_state.template view<DeviceType>();
   auto f = atomKK->k_f.template view<DeviceType>();
   auto vatom = k_vatom.template view<DeviceType>();
   const int want_virial = vflag_either, want_vatom = vflag_atom;
   const double ftm2v = force->ftm2v;
+  const int corrected = corrected_gradient, dim = domain->dimension;
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
       ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
@@ -207,8 +212,9 @@ void PairSPHGranularKokkos<DeviceType>::grains(const DeviceParticles<DeviceType>
         const int i = ilist(ii);
         if (!p.granular(i)) return;
         double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-        const GRANSPH::ParticleRates r =
-            GRANSPH::granular_rates(p, i, want_virial ? vir : nullptr);
+        GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, want_virial ? vir : nullptr);
+        if (corrected) r.correct_gradient(dim);
+        state(i, FSI::VISC_PRESSURE) = r.viscous_pressure();
         const double m = p.particle(i).mass;
         for (int a = 0; a < 3; ++a) f(i, a) += m * r.acc[a] / ftm2v;
         rates(i, FSI::DRHO) = r.drho;
