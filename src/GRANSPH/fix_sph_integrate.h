@@ -13,6 +13,7 @@
 #include "atom.h"
 #include "fix.h"
 #include "gransph_material.h"
+#include "gransph_tensor.h"
 
 namespace LAMMPS_NS {
 
@@ -55,6 +56,10 @@ class FixSPHIntegrate : public Fix {
   GranSPHMaterial material;
 
   virtual void forward_comm_state();    // ghosts get fresh rho and sigma
+  // What compute sph/stress/atom reads: the share of the model's strength that the
+  // stress sigma uses (1 at yield), and state up to date on the host.
+  virtual double mobilised_ratio(const GRANSPH::Sym3 &sigma) const = 0;
+  virtual void sync_state_host() {}    // the plain fix keeps it there
   void gravity_vector(double *g) const;  // acceleration of the fix gravity on the grains
 
  protected:

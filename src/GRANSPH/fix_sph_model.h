@@ -28,6 +28,11 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
     check_finite();
   }
 
+  double mobilised_ratio(const GRANSPH::Sym3 &sigma) const override
+  {
+    return model.mobilised_ratio(sigma);
+  }
+
   const Model model;
 
  protected:

@@ -260,6 +260,13 @@ template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Mode
   sync_host();
 }
 
+// for host readers of the state between output steps (compute sph/stress/atom)
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::sync_state_host()
+{
+  k_state.template sync<LMPHostType>();
+}
+
 /* ----------------------------------------------------------------------
    forward communication of rho and sigma: on the device, or through the
    host buffers when comm/kokkos chooses the classic path

@@ -32,6 +32,7 @@ class FixSPHModelKokkos : public FixSPHModel<Model>, public KokkosBase, public S
   void end_of_step() override;
   void post_run() override;
   void forward_comm_state() override;
+  void sync_state_host() override;
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;

@@ -45,6 +45,17 @@ struct DruckerPrager {
     return sqrt(second_invariant(s)) + alpha_phi * s.trace() - k_c;
   }
 
+  // The part of the strength that the stress uses, sqrt(J2) / (k_c - alpha_phi I1): 1 on
+  // the cone, below 1 inside it. At the apex there is no strength left to mobilise: 1.
+  // With cohesion the strength there is k_c - alpha_phi I1 = round-off, hence the
+  // tolerance (that of plastic_rate).
+  KOKKOS_INLINE_FUNCTION double mobilised_ratio(const Sym3 &s) const
+  {
+    const double strength = k_c - alpha_phi * s.trace();
+    if (strength <= 1.0e-10 * (k_c + fabs(alpha_phi * s.trace()))) return 1.0;
+    return sqrt(second_invariant(s)) / strength;
+  }
+
   // Bui's treatment of states outside the admissible region: tension beyond the
   // apex of the cone is cut back to the apex (tension cracking), then a deviator
   // outside the cone is scaled back onto it. Raises regime accordingly.

@@ -38,6 +38,15 @@ struct PhaseChange {
     return from_material(m.E, m.nu, m.rho_c, m.xi, m.mu_s, m.mu_2);
   }
 
+  // Shear stress over the static yield stress, tau / (mu_s p): below 1 in the solid, 1 at
+  // yield, mu(I) / mu_s when flowing. A stress-free (disconnected) state has no strength
+  // left to mobilise: 1.
+  KOKKOS_INLINE_FUNCTION double mobilised_ratio(const Sym3 &s) const
+  {
+    const double strength = -mu_s * s.trace() / 3.0;
+    return strength > 0.0 ? sqrt(second_invariant(s)) / strength : 1.0;
+  }
+
   // Shear stress after a plastic step: the smaller root of eq. 26 in the
   // cancellation-free form of eq. 27; tau_tr > mu_s p_tr and mu_2 >= mu_s keep
   // the discriminant non-negative, the clamp only absorbs round-off.

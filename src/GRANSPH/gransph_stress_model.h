@@ -9,7 +9,12 @@
    the stress after a step of length dt from s0, with the Jaumann rotation and
    the flow direction evaluated at s, for strain rate d, spin w and density rho;
    it also says in which regime the particle ended the step. The integrator
-   fixes and their Kokkos twins call it per particle.
+   fixes and their Kokkos twins call it per particle. And
+
+     double mobilised_ratio(const Sym3 &s) const;
+
+   the share of the model's strength that the stress s uses, 1 at yield (compute
+   sph/stress/atom).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_STRESS_MODEL_H

@@ -7,6 +7,7 @@
 #include "version.h"
 
 #include "compute_sph_runout.h"
+#include "compute_sph_stress_atom.h"
 #include "compute_sph_wallforce.h"
 #include "fix_sph_elastoplastic.h"
 #include "fix_sph_inflow.h"
@@ -99,6 +100,9 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   register_style(reg, lmp, handle, "compute", "sph/wallforce",
                  "GRANSPH: force of the grains on a wall of dummy particles",
                  (void *) &compute_creator<ComputeSPHWallForce>, true);
+  register_style(reg, lmp, handle, "compute", "sph/stress/atom",
+                 "GRANSPH: per-atom p, q, principal stresses, Lode angle, mobilised strength",
+                 (void *) &compute_creator<ComputeSPHStressAtom>, true);
   register_style(reg, lmp, handle, "compute", "sph/runout",
                  "GRANSPH: deposit edge, skirt and height from the thickness profile",
                  (void *) &compute_creator<ComputeSPHRunout>, true);

@@ -70,6 +70,29 @@ def read_dump(path):
     return {n: data[:, k] for k, n in enumerate(names)}
 
 
+def stress_atom_difference(a, b, compute="stress"):
+    """Largest difference between two dumps of compute sph/stress/atom `compute`, per
+    column, against the largest principal stress. The major direction and the Lode angle
+    are undefined where principal stresses coincide (a stress-free grain, whose stress is
+    round-off): each is weighed by the gap that defines it, |dn| (sigma_1 - sigma_2) and
+    |dlode| (sigma_1 - sigma_3), the stress difference that turns it that much. The
+    direction's sign is a convention: compared up to sign."""
+    col = lambda d, k: d[f"c_{compute}[{k}]"]
+    scale = max(np.max(np.abs(col(a, k))) for k in (3, 4, 5))
+    out = {}
+    for k in (1, 2, 3, 4, 5):
+        out[str(k)] = np.max(np.abs(col(a, k) - col(b, k))) / scale
+    for k in (10, 11):
+        out[str(k)] = np.max(np.abs(col(a, k) - col(b, k)))
+    na = np.stack([col(a, k) for k in (6, 7, 8)], axis=1)
+    nb = np.stack([col(b, k) for k in (6, 7, 8)], axis=1)
+    dn = np.minimum(np.linalg.norm(na - nb, axis=1), np.linalg.norm(na + nb, axis=1))
+    out["6-8"] = np.max(dn * (col(a, 3) - col(a, 4))) / scale
+    dlode = np.radians(np.abs(col(a, 9) - col(b, 9)))
+    out["9"] = np.max(dlode * (col(a, 3) - col(a, 5))) / scale
+    return out
+
+
 def result_line(stdout):
     """The words of the line that starts with 'result:'."""
     for line in stdout.splitlines():
