@@ -93,6 +93,21 @@ def stress_atom_difference(a, b, compute="stress"):
     return out
 
 
+def dump_differences(a, b):
+    """Largest difference between two dumps of the same atoms, per column, against the
+    column's largest value; the columns of compute sph/stress/atom (named c_stress[k])
+    as stress_atom_difference weighs them."""
+    assert np.array_equal(a["id"], b["id"]), "the dumps hold different atoms"
+    out = {}
+    for name in a:
+        if not name.startswith("c_stress["):
+            out[name] = np.max(np.abs(a[name] - b[name])) / max(np.max(np.abs(a[name])), 1e-30)
+    if "c_stress[1]" in a:
+        for column, diff in stress_atom_difference(a, b).items():
+            out[f"c_stress[{column}]"] = diff
+    return out
+
+
 def result_line(stdout):
     """The words of the line that starts with 'result:'."""
     for line in stdout.splitlines():
