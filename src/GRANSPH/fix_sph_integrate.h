@@ -84,7 +84,7 @@ class FixSPHIntegrate : public Fix {
   void set_timestep(double dt);
 
  private:
-  // what the last step ran with: a run continues its rates only with the same
+  // what the last step ran with: a run continues with its rates only if unchanged
   double last_dt;
   std::vector<double> last_pair_settings;    // empty: no run yet
   const char *fresh_start;                   // why this run cannot continue, or nullptr
