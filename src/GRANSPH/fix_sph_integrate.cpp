@@ -1,6 +1,7 @@
 /* ----------------------------------------------------------------------
    GRANSPH: shared base of the granular SPH integrators: per-atom state, its
-   migration, communication and restart, and the CFL timestep.
+   migration, communication and restart, the continuation of a run, and the
+   CFL timestep.
 ------------------------------------------------------------------------- */
 
 #include "fix_sph_integrate.h"
@@ -16,6 +17,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "pair.h"
+#include "pair_sph_granular.h"
 #include "update.h"
 
 #include <cmath>
@@ -25,11 +27,23 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 using GRANSPH::Sym3;
 
+namespace {
+constexpr int ROW = FixSPHIntegrate::NSTATE + FixSPHIntegrate::NRATES + FixSPHIntegrate::NSTART;
+
+// the settings of the pair style the rates depend on (none for another style)
+std::vector<double> pair_settings(const Force *force)
+{
+  auto pair = dynamic_cast<const PairSPHGranular *>(force->pair);
+  return pair ? pair->rate_settings() : std::vector<double>();
+}
+}    // namespace
+
 /* ---------------------------------------------------------------------- */
 
 FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), state(nullptr), rates(nullptr), start(nullptr), wallbit(0),
-    rho_init(0.0), cfl(0.2), geostatic_flag(0), surface_height(0.0), restored(0)
+    rho_init(0.0), cfl(0.2), geostatic_flag(0), surface_height(0.0), restored(0), last_dt(0.0),
+    fresh_start(nullptr)
 {
   const std::string style_name = std::string("fix ") + style;
   if (narg < 5) error->all(FLERR, "Illegal {} command: need a material file and name", style_name);
@@ -77,6 +91,7 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   if (!atom->rmass_flag && !atom->mass) error->all(FLERR, "{} needs per-type or per-atom masses", style_name);
 
   time_integrate = 1;
+  restart_global = 1;
   restart_peratom = 1;
   create_attribute = 1;
   peratom_flag = 1;
@@ -126,21 +141,127 @@ void FixSPHIntegrate::init()
   if (any) error->all(FLERR, "Fix {}: an atom is in both the fix group and the walls group", style);
 }
 
-// before the setup force evaluation, so that the first rates see the initial stress
+// before the setup force evaluation: the geostatic stress, so that the first rates
+// see it, and a copy of what that evaluation overwrites if this run continues the last
 void FixSPHIntegrate::setup_pre_force(int /*vflag*/)
 {
   if (geostatic_flag && !restored) init_geostatic_stress();
   geostatic_flag = 0;
+  fresh_start = why_not_continue();
+  if (fresh_start)
+    forget_steps();
+  else
+    save_step();
 }
 
+// Before any output of the run. Continuing, the first step uses the rates, the
+// acceleration, the wall velocities and the timestep of the last step, as it would
+// have without the run boundary; otherwise those of the setup evaluation at t.
 void FixSPHIntegrate::setup(int /*vflag*/)
 {
-  reset_cfl_timestep();
+  check_plane();
+  check_finite();
+  if (fresh_start) {
+    if (comm->me == 0)
+      utils::logmesg(lmp, "Fix {}: {}: the first step starts from the rates at t of the setup "
+                     "force evaluation\n", style, fresh_start);
+    reset_cfl_timestep();
+  } else
+    restore_step();
+  last_pair_settings = pair_settings(force);
 }
 
 void FixSPHIntegrate::end_of_step()
 {
   reset_cfl_timestep();
+  last_dt = update->dt;
+}
+
+/* ----------------------------------------------------------------------
+   continuation across runs
+------------------------------------------------------------------------- */
+
+// nullptr if this run can continue with the rates of the last step, or the reason
+const char *FixSPHIntegrate::why_not_continue() const
+{
+  int local = 0;
+  for (int i = 0; i < atom->nlocal && !local; ++i)
+    local = (atom->mask[i] & groupbit) && start[i][STEPPED] != 0.0;
+  int any = 0;
+  MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, world);
+  if (!any) return "no previous step";
+  if (pair_settings(force) != last_pair_settings)
+    return "the pair style settings changed since the last step";
+  if (update->dt != last_dt) return "the timestep changed since the last step";
+  return nullptr;
+}
+
+void FixSPHIntegrate::forget_steps()
+{
+  for (int i = 0; i < atom->nlocal; ++i) start[i][STEPPED] = 0.0;
+}
+
+void FixSPHIntegrate::save_step()
+{
+  const int nlocal = atom->nlocal;
+  saved.resize((size_t) nlocal * ROW);
+  for (int i = 0; i < nlocal; ++i) {
+    double *row = &saved[(size_t) i * ROW];
+    memcpy(row, state[i], NSTATE * sizeof(double));
+    memcpy(row + NSTATE, rates[i], NRATES * sizeof(double));
+    memcpy(row + NSTATE + NRATES, start[i], NSTART * sizeof(double));
+  }
+}
+
+// atoms without a step (created since) keep the rates of the setup evaluation
+void FixSPHIntegrate::restore_step()
+{
+  const int nrows = MIN(atom->nlocal, (int) (saved.size() / ROW));
+  bigint fresh[2] = {0, 0};    // grains without a step, all grains
+  for (int i = 0; i < nrows; ++i) {
+    const double *row = &saved[(size_t) i * ROW];
+    const bool grain = atom->mask[i] & groupbit;
+    fresh[1] += grain;
+    if (row[NSTATE + NRATES + STEPPED] == 0.0) {
+      fresh[0] += grain;
+      continue;
+    }
+    memcpy(state[i], row, NSTATE * sizeof(double));
+    memcpy(rates[i], row + NSTATE, NRATES * sizeof(double));
+    memcpy(start[i], row + NSTATE + NRATES, NSTART * sizeof(double));
+  }
+  std::vector<double>().swap(saved);
+  bigint total[2];
+  MPI_Allreduce(fresh, total, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (total[0] && comm->me == 0)
+    utils::logmesg(lmp, "Fix {}: {} of {} grains are new since the last step: their first step "
+                   "starts from the rates at t of the setup force evaluation\n", style, total[0],
+                   total[1]);
+}
+
+// Global restart data: what the last step ran with, and the elapsed time, which
+// restart files of this LAMMPS version leave out although the CFL timestep varies.
+void FixSPHIntegrate::write_restart(FILE *fp)
+{
+  std::vector<double> list = {last_dt, update->atime, (double) update->atimestep,
+                              (double) last_pair_settings.size()};
+  list.insert(list.end(), last_pair_settings.begin(), last_pair_settings.end());
+  if (comm->me == 0) {
+    const int size = list.size() * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list.data(), sizeof(double), list.size(), fp);
+  }
+}
+
+void FixSPHIntegrate::restart(char *buf)
+{
+  const auto list = reinterpret_cast<const double *>(buf);
+  last_dt = list[0];
+  if (update->atime == 0.0 && update->atimestep == 0) {    // nothing set the time since
+    update->atime = list[1];
+    update->atimestep = static_cast<bigint>(list[2]);
+  }
+  last_pair_settings.assign(list + 4, list + 4 + static_cast<int>(list[3]));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -240,7 +361,7 @@ void FixSPHIntegrate::init_geostatic_stress()
 }
 
 // A non-finite state or a non-positive density stops the run with the atom's ID
-// rather than spreading NaNs.
+// rather than spreading NaNs (at setup: before the first output).
 void FixSPHIntegrate::check_finite() const
 {
   double **x = atom->x;
@@ -256,6 +377,20 @@ void FixSPHIntegrate::check_finite() const
                  "{}) at step {}",
                  style, atom->tag[i], state[i][RHO], v[i][0], v[i][1], v[i][2], update->ntimestep);
   }
+}
+
+// A 2d run moves particles in x and y only: grains or walls off the z = 0 plane, or
+// moving out of it, would stay there unnoticed.
+void FixSPHIntegrate::check_plane() const
+{
+  if (domain->dimension != 2) return;
+  double **x = atom->x;
+  double **v = atom->v;
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; ++i)
+    if ((mask[i] & (groupbit | wallbit)) && (x[i][2] != 0.0 || v[i][2] != 0.0))
+      error->one(FLERR, "Fix {}: atom {} is off the z = 0 plane of the 2d run (z {}, vz {})",
+                 style, atom->tag[i], x[i][2], v[i][2]);
 }
 
 /* ----------------------------------------------------------------------
@@ -305,33 +440,36 @@ int FixSPHIntegrate::unpack_exchange(int nlocal, double *buf)
   return m;
 }
 
-// restart files hold the state; rates and the wall velocity history start anew at setup
+// restart files hold everything the next step needs: the state, the rates and the
+// start of the step
 int FixSPHIntegrate::pack_restart(int i, double *buf)
 {
-  int m = 0;
-  buf[m++] = NSTATE + 1;
-  for (int k = 0; k < NSTATE; ++k) buf[m++] = state[i][k];
-  return m;
+  buf[0] = ROW + 1;
+  return 1 + pack_exchange(i, buf + 1);
 }
 
+// files of earlier versions hold the state only: those atoms start without a step
 void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
-  for (int k = 0; k < NSTATE; ++k) state[nlocal][k] = extra[nlocal][m++];
+  const int size = static_cast<int>(extra[nlocal][m++]);
+  if (size == ROW + 1)
+    unpack_exchange(nlocal, &extra[nlocal][m]);
+  else
+    for (int k = 0; k < NSTATE; ++k) state[nlocal][k] = extra[nlocal][m++];
   restored = 1;
 }
 
 int FixSPHIntegrate::size_restart(int /*nlocal*/)
 {
-  return NSTATE + 1;
+  return ROW + 1;
 }
 
 int FixSPHIntegrate::maxsize_restart()
 {
-  return NSTATE + 1;
+  return ROW + 1;
 }
 
 int FixSPHIntegrate::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,

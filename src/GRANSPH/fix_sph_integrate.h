@@ -5,6 +5,11 @@
    style writes (density rate, strain rate, spin) and the predictor copies, and
    sets the CFL timestep (eq. 19). FixSPHModel<Model> (fix_sph_model.h) adds the
    predictor-corrector with a constitutive model.
+
+   A run continues the previous one exactly: the predictor of a step uses the
+   rates and acceleration of the previous step's mid-point, so they, the wall
+   velocity history and the timestep are kept across run commands (the setup
+   force evaluation must not replace them) and in restart files.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_SPH_INTEGRATE_H
@@ -15,6 +20,8 @@
 #include "gransph_material.h"
 #include "gransph_tensor.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class FixSPHIntegrate : public Fix {
@@ -24,8 +31,12 @@ class FixSPHIntegrate : public Fix {
   // f_ID[9] = the pressure the artificial viscosity adds, from the pair style); its
   // first NCOMM columns are forward-communicated to ghosts.
   enum { RHO = 0, SIGMA = 1, REGIME = 7, VISC_PRESSURE = 8, NSTATE = 9, NCOMM = 7 };
-  enum { DRHO = 0, STRAIN = 1, SPIN = 7, NRATES = 10 };
-  enum { V_START = 0, RHO_START = 3, SIGMA_START = 4, WALL_V = 10, NSTART = 13 };
+  // RATES: what the pair style writes, and the acceleration of the same evaluation
+  // that the next predictor uses. START: the start of the step for the corrector,
+  // the wall velocity of the last evaluation, and STEPPED: 1 once the atom's rates
+  // (grains) or wall velocity (dummy particles) come from a step's evaluation.
+  enum { DRHO = 0, STRAIN = 1, SPIN = 7, ACC = 10, NRATES = 13 };
+  enum { V_START = 0, RHO_START = 3, SIGMA_START = 4, WALL_V = 10, STEPPED = 13, NSTART = 14 };
 
   FixSPHIntegrate(class LAMMPS *, int, char **);
   ~FixSPHIntegrate() override;
@@ -34,6 +45,8 @@ class FixSPHIntegrate : public Fix {
   void setup_pre_force(int) override;
   void setup(int) override;
   void end_of_step() override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -50,8 +63,8 @@ class FixSPHIntegrate : public Fix {
 
   // What sph/granular reads and writes.
   double **state;    // rho, sigma (xx yy zz xy xz yz), regime
-  double **rates;    // drho/dt, strain rate (6), spin (xy xz yz)
-  double **start;    // v, rho, sigma at the start of the step; last wall velocity
+  double **rates;    // drho/dt, strain rate (6), spin (xy xz yz), acceleration
+  double **start;    // v, rho, sigma at the start of the step; last wall velocity; stepped
   int wallbit;       // group bit of the dummy-wall particles (0: no walls)
   GranSPHMaterial material;
 
@@ -71,11 +84,22 @@ class FixSPHIntegrate : public Fix {
 
   double smoothing_length() const;
   void check_finite() const;
+  void check_plane() const;
   virtual void reset_cfl_timestep();
   void set_timestep(double dt);
 
  private:
+  // what the last step ran with: a run continues with its rates only if unchanged
+  double last_dt;
+  std::vector<double> last_pair_settings;    // empty: no run yet
+  const char *fresh_start;                   // why this run cannot continue, or nullptr
+  std::vector<double> saved;                 // the arrays across the setup evaluation
+
   void init_geostatic_stress();
+  const char *why_not_continue() const;
+  void forget_steps();
+  void save_step();
+  void restore_step();
 };
 
 }    // namespace LAMMPS_NS

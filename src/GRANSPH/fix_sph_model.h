@@ -52,7 +52,12 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
                                state[i][RHO], GRANSPH::Sym3::load(&state[i][SIGMA])};
       GRANSPH::StepStart s{{start[i][V_START], start[i][V_START + 1], start[i][V_START + 2]},
                            start[i][RHO_START], GRANSPH::Sym3::load(&start[i][SIGMA_START])};
-      const GRANSPH::StepRates r{{ftm * f[i][0], ftm * f[i][1], ftm * f[i][2]},
+      // the predictor takes the acceleration of the last step's mid-point, which the
+      // corrector kept; without a step, that of the setup evaluation
+      const bool stored = stage == PREDICT && start[i][STEPPED] != 0.0;
+      const GRANSPH::StepRates r{{stored ? rates[i][ACC] : ftm * f[i][0],
+                                  stored ? rates[i][ACC + 1] : ftm * f[i][1],
+                                  stored ? rates[i][ACC + 2] : ftm * f[i][2]},
                                  rates[i][DRHO], GRANSPH::Sym3::load(&rates[i][STRAIN]),
                                  GRANSPH::Spin3::load(&rates[i][SPIN])};
       GRANSPH::Regime regime;
@@ -61,8 +66,11 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
         for (int a = 0; a < 3; ++a) start[i][V_START + a] = s.v[a];
         start[i][RHO_START] = s.rho;
         s.sigma.store(&start[i][SIGMA_START]);
-      } else
+      } else {
         GRANSPH::correct(model, p, s, r, dt, regime);
+        for (int a = 0; a < 3; ++a) rates[i][ACC + a] = r.acc[a];
+        start[i][STEPPED] = 1.0;
+      }
       for (int a = 0; a < 3; ++a) {
         x[i][a] = p.x[a];
         v[i][a] = p.v[a];

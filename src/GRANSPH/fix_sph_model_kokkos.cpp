@@ -47,7 +47,10 @@ template <class DeviceType, class Model, bool PREDICT> struct StepFunctor {
                 start(i, FSI::RHO_START),
                 {start(i, SS), start(i, SS + 1), start(i, SS + 2), start(i, SS + 3),
                  start(i, SS + 4), start(i, SS + 5)}};
-    const StepRates r{{ftm * f(i, 0), ftm * f(i, 1), ftm * f(i, 2)},
+    const bool stored = PREDICT && start(i, FSI::STEPPED) != 0.0;    // as FixSPHModel
+    const StepRates r{{stored ? rates(i, FSI::ACC) : ftm * f(i, 0),
+                       stored ? rates(i, FSI::ACC + 1) : ftm * f(i, 1),
+                       stored ? rates(i, FSI::ACC + 2) : ftm * f(i, 2)},
                       rates(i, FSI::DRHO),
                       {rates(i, D), rates(i, D + 1), rates(i, D + 2), rates(i, D + 3),
                        rates(i, D + 4), rates(i, D + 5)},
@@ -58,8 +61,11 @@ template <class DeviceType, class Model, bool PREDICT> struct StepFunctor {
       for (int a = 0; a < 3; ++a) start(i, FSI::V_START + a) = s.v[a];
       start(i, FSI::RHO_START) = s.rho;
       s.sigma.store(&start(i, SS));
-    } else
+    } else {
       correct(model, p, s, r, dt, regime);
+      for (int a = 0; a < 3; ++a) rates(i, FSI::ACC + a) = r.acc[a];
+      start(i, FSI::STEPPED) = 1.0;
+    }
     for (int a = 0; a < 3; ++a) {
       x(i, a) = p.x[a];
       v(i, a) = p.v[a];
@@ -122,10 +128,14 @@ void FixSPHModelKokkos<DeviceType, Model>::setup_pre_force(int vflag)
   modified_host();
 }
 
-template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::setup(int)
+// the checks and the continuation work on the host copies, once per run
+template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::setup(int vflag)
 {
   this->atomKK->sync(this->execution_space, this->datamask_read);
-  reset_cfl_timestep();
+  this->atomKK->sync(Host, X_MASK | V_MASK | MASK_MASK | TAG_MASK);
+  sync_host();
+  FixSPHModel<Model>::setup(vflag);
+  modified_host();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -183,7 +193,8 @@ template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Mode
 
   atomKK->modified(this->execution_space, this->datamask_modify);
   k_state.template modify<DeviceType>();
-  if (predict) k_start.template modify<DeviceType>();
+  k_start.template modify<DeviceType>();
+  if (!predict) k_rates.template modify<DeviceType>();
 }
 
 // non-finite states or non-positive densities among this rank's granular particles
@@ -251,7 +262,7 @@ void FixSPHModelKokkos<DeviceType, Model>::reset_cfl_timestep()
 // The per-atom output is read on the host: bring it there on output steps only.
 template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::end_of_step()
 {
-  reset_cfl_timestep();
+  FixSPHModel<Model>::end_of_step();
   if (this->update->ntimestep == this->output->next) k_state.template sync<LMPHostType>();
 }
 
@@ -386,16 +397,16 @@ int FixSPHModelKokkos<DeviceType, Model>::unpack_exchange(int nlocal, double *bu
 template <class DeviceType, class Model>
 int FixSPHModelKokkos<DeviceType, Model>::pack_restart(int i, double *buf)
 {
-  k_state.template sync<LMPHostType>();
+  sync_host();
   return FixSPHModel<Model>::pack_restart(i, buf);
 }
 
 template <class DeviceType, class Model>
 void FixSPHModelKokkos<DeviceType, Model>::unpack_restart(int nlocal, int nth)
 {
-  k_state.template sync<LMPHostType>();
+  sync_host();
   FixSPHModel<Model>::unpack_restart(nlocal, nth);
-  k_state.template modify<LMPHostType>();
+  modified_host();
 }
 
 namespace LAMMPS_NS {

@@ -10,6 +10,7 @@
 #include "potential_file_reader.h"
 #include "tokenizer.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace LAMMPS_NS;
@@ -32,18 +33,27 @@ GranSPHMaterial GranSPHMaterial::read(LAMMPS *lmp, const std::string &file,
   double values[NPARAMS - 1] = {0.0};
   int found = 0;
 
+  // every line is one whole material: a field too many or too few is an error, not
+  // a value silently dropped or taken from the next line
   if (lmp->comm->me == 0) {
     PotentialFileReader reader(lmp, file, "GRANSPH material");
     char *line;
-    while ((line = reader.next_line(NPARAMS))) {
+    while ((line = reader.next_line())) {
+      const std::string text = utils::trim(line);
+      ValueTokenizer words(text);
+      const std::string material = words.next_string();
+      if (words.count() != NPARAMS)
+        lmp->error->one(FLERR, "{}: material file {}, material {}: {} fields instead of {} "
+                        "on line: {}", style, file, material, words.count(), NPARAMS, text);
       try {
-        ValueTokenizer words(line);
-        if (words.next_string() != name) continue;
-        for (double &v : values) v = words.next_double();
+        double line_values[NPARAMS - 1];
+        for (double &v : line_values) v = words.next_double();
+        if (material != name || found) continue;
+        std::copy(line_values, line_values + NPARAMS - 1, values);
         found = 1;
-        break;
       } catch (TokenizerException &e) {
-        lmp->error->one(FLERR, "{}: bad line in material file {}: {}", style, file, e.what());
+        lmp->error->one(FLERR, "{}: material file {}, material {}: {} on line: {}", style, file,
+                        material, e.what(), text);
       }
     }
   }

@@ -105,12 +105,14 @@ template <class Particles> void PairSPHGranular::wall_stresses(const Particles &
   double **v = atom->v;
   double g[3];
   fix.gravity_vector(g);
-  const double inv_dt = update->setupflag ? 0.0 : 1.0 / update->dt;
+  const int stepping = !update->setupflag;
+  const double inv_dt = stepping ? 1.0 / update->dt : 0.0;
   for (int ii = 0; ii < inum; ++ii) {
     const int d = ilist[ii];
     if (!p.wall(d)) continue;
     double g_minus_a[3];
     GRANSPH::wall_gravity(g, v[d], &fix.start[d][FixSPHIntegrate::WALL_V], inv_dt, g_minus_a);
+    if (stepping) fix.start[d][FixSPHIntegrate::STEPPED] = 1.0;
     particles[d].sigma = wall_sums[d].stress(g_minus_a, wall_stress_mode);
     particles[d].sigma.store(&fix.state[d][FixSPHIntegrate::SIGMA]);
   }
@@ -327,6 +329,12 @@ void PairSPHGranular::read_restart_settings(FILE *fp)
   visc.walls = choices[1] != 0;
   corrected_gradient = choices[2];
   wall_stress_mode = static_cast<GRANSPH::WallSums::Mode>(choices[3]);
+}
+
+std::vector<double> PairSPHGranular::rate_settings() const
+{
+  return {h, visc.alpha, visc.beta, double(visc.sound), double(visc.walls),
+          double(corrected_gradient), double(wall_stress_mode)};
 }
 
 void *PairSPHGranular::extract(const char *name, int &dim)

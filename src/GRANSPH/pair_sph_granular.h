@@ -16,6 +16,8 @@ PairStyle(sph/granular,PairSPHGranular);
 
 #include "gransph_pair_terms.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class FixSPHIntegrate;
@@ -34,6 +36,10 @@ class PairSPHGranular : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
+
+  // the settings the rates depend on: the integrator continues a run with the
+  // rates of the last step only if they are unchanged
+  std::vector<double> rate_settings() const;
 
  protected:
   double h;                                   // smoothing length; the kernel support is 2h

@@ -166,7 +166,8 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
   double g[3];
   integrator->gravity_vector(g);
   const double gx = g[0], gy = g[1], gz = g[2];
-  const double inv_dt = update->setupflag ? 0.0 : 1.0 / update->dt;
+  const int stepping = !update->setupflag;
+  const double inv_dt = stepping ? 1.0 / update->dt : 0.0;
   const GRANSPH::WallSums::Mode mode = wall_stress_mode;
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
@@ -177,6 +178,7 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
         const double gd[3] = {gx, gy, gz};
         double g_minus_a[3];
         GRANSPH::wall_gravity(gd, particles(d).v, &start(d, FSI::WALL_V), inv_dt, g_minus_a);
+        if (stepping) start(d, FSI::STEPPED) = 1.0;
         const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
         particles(d).sigma = sums.stress(g_minus_a, mode);
         particles(d).sigma.store(&state(d, FSI::SIGMA));

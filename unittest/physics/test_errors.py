@@ -62,6 +62,10 @@ CASES = [
      "group all has atoms that fix sph integrates"),
     ("invalid material values", dict(fix="fix sph sand sph/elastoplastic {bad} Bad"),
      "Poisson's ratio must be in"),
+    ("a material line with a field too many", dict(fix="fix sph sand sph/elastoplastic {long} Good"),
+     r"material file .*long.gransph, material Long: 12 fields instead of 11 on line: Long 2450"),
+    ("a material line with a field too few", dict(fix="fix sph sand sph/elastoplastic {short} Good"),
+     r"material file .*short.gransph, material Short: 10 fields instead of 11 on line: Short 2450"),
 ]
 
 # expansion faster than dt can follow: rho < 0, caught with the atom's ID
@@ -73,18 +77,65 @@ BAD_STATE = r"atom \d+ has a non-finite state or non-positive density"
 CASES.append(("a blow-up is caught with the atom ID", BLOW_UP, BAD_STATE))
 KOKKOS = ["-k", "on", "t", "1", "-sf", "kk"]
 
+# a bad initial state stops the run at setup, before the step-0 thermo output
+BAD_START = BAD_STATE + r" \(rho 2450, v {} 0 0\) at step 0"
+NAN_START = dict(run="variable vx atom exp(1000)-exp(1000)\nvelocity sand set v_vx 0 0 units box\nrun 10")
+INF_START = dict(run="variable vx atom exp(1000)\nvelocity sand set v_vx 0 0 units box\nrun 10")
+CASES.append(("a NaN initial velocity is caught at setup", NAN_START, BAD_START.format("-?nan")))
+CASES.append(("an infinite initial velocity is caught at setup", INF_START, BAD_START.format("inf")))
+
+# a 2d layer of sand on a dummy floor, with `{change}` before the run
+PLANE_2D = """plugin load gransphplugin.so
+units si
+dimension 2
+atom_style atomic
+atom_modify map array
+boundary f f p
+comm_modify vel yes
+region box block 0 0.1 -0.03 0.1 -0.005 0.005 units box
+create_box 2 box
+lattice sq 0.01 origin 0.5 0.5 0
+region sand block 0 0.05 0 0.05 INF INF units box
+region floor block 0 0.05 -0.03 0 INF INF units box
+create_atoms 1 region sand
+create_atoms 2 region floor
+group sand type 1
+group floor type 2
+mass * 2.45e-4
+pair_style sph/granular 0.012
+pair_coeff * *
+fix gravity sand gravity 9.81 vector 0 -1 0
+fix sph sand sph/elastoplastic sand.gransph Chen2019 walls floor
+{change}
+run 10
+"""
+OFF_PLANE = r"atom {} is off the z = 0 plane of the 2d run \(z {}, vz {}\)"
+CASES_2D = [
+    ("2d: good input runs", "", None),
+    ("2d: a grain off the plane", "set atom 3 z 0.001", OFF_PLANE.format(3, 0.001, 0)),
+    ("2d: a wall particle off the plane", "set atom 30 z -0.002", OFF_PLANE.format(30, -0.002, 0)),
+    ("2d: a grain with a z velocity", "set atom 7 vz 0.5", OFF_PLANE.format(7, 0, 0.5)),
+]
+
 MOVE_2D = gransph_run.EMPTY_2D_BOX + "fix move all sph/move 0 1 1\n"
 
 
 def run_case(tmp, fields, args=()):
-    text = BASE.format(**{**GOOD, **fields}).replace("{bad}", os.path.join(tmp, "bad.gransph"))
+    text = BASE.format(**{**GOOD, **fields})
+    for name in ("bad", "long", "short"):
+        text = text.replace("{" + name + "}", os.path.join(tmp, name + ".gransph"))
     return gransph_run.first_error(tmp, text, args)
 
 
 check = gransph_run.Checks()
 with tempfile.TemporaryDirectory() as tmp:
+    good = "Good 2450 20e6 0.3 37 0 0 1500 1.1 0.6 0.8\n"
     with open(os.path.join(tmp, "bad.gransph"), "w") as f:
         f.write("# UNITS: si\nBad 2450 20e6 0.6 37 0 0 1500 1.1 0.6 0.8\n")
+    with open(os.path.join(tmp, "long.gransph"), "w") as f:
+        f.write("# UNITS: si\n" + good + "Long 2450 20e6 0.3 37 0 0 1500 1.1 0.6 0.8 9\n")
+    with open(os.path.join(tmp, "short.gransph"), "w") as f:
+        f.write("# UNITS: si\n" + good + "Short 2450 20e6 0.3 37 0 0 1500 1.1 0.6\n" + good)
     code, error = run_case(tmp, {})
     check("good input runs", code == 0 and not error, error or "no error")
     for name, fields, expected in CASES:
@@ -95,4 +146,12 @@ with tempfile.TemporaryDirectory() as tmp:
     code, error = run_case(tmp, BLOW_UP, KOKKOS)
     check("the /kk integrator catches a blow-up too", code != 0 and re.search(BAD_STATE, error),
           error or "no error")
+    code, error = run_case(tmp, NAN_START, KOKKOS)
+    check("the /kk integrator catches a NaN initial velocity at setup",
+          code != 0 and re.search(BAD_START.format("-?nan"), error), error or "no error")
+    for name, change, expected in CASES_2D:
+        for args in ([], KOKKOS):
+            code, error = gransph_run.first_error(tmp, PLANE_2D.format(change=change), args)
+            ok = code == 0 and not error if expected is None else code != 0 and re.search(expected, error)
+            check(name + (" (/kk)" if args else ""), ok, error or "no error")
 check.finish()

@@ -1,0 +1,76 @@
+"""A run continues exactly across run commands and restarts: in.continuation run
+in one piece, in two runs, and in two processes through a restart file gives the
+same positions, velocities, density and stress to round-off (1e-12 of the largest
+value of each), for both integrator fixes, on 1 and 2 MPI ranks, with the CFL
+timestep and a wall whose velocity changes every step. What invalidates the rates
+of the last step is recomputed and said in the log. Arguments are passed to LAMMPS
+(e.g. -k on t 1 -sf kk)."""
+
+import os
+import sys
+import tempfile
+
+import numpy as np
+
+import gransph_run
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+INPUT = os.path.join(HERE, "in.continuation")
+ARGS = sys.argv[1:]
+GROUPS = {"position": ["x", "y", "z"], "velocity": ["vx", "vy", "vz"], "density": ["f_sph[1]"],
+          "stress": [f"f_sph[{k}]" for k in range(2, 8)]}
+FRESH = "the first step starts from the rates at t"
+
+check = gransph_run.Checks()
+
+
+def run(tmp, ranks, **variables):
+    out = gransph_run.run(INPUT, variables, ranks=ranks, args=ARGS, cwd=tmp)
+    return out, gransph_run.read_dump(os.path.join(tmp, "continuation.dump"))
+
+
+def difference(a, b):
+    """Largest difference of each group of columns over its largest value."""
+    assert np.array_equal(a["id"], b["id"]), "different atoms"
+    result = {}
+    for group, names in GROUPS.items():
+        scale = max(np.max(np.abs(a[n])) for n in names)
+        result[group] = max(np.max(np.abs(a[n] - b[n])) for n in names) / scale
+    return result
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    for model in ("elastoplastic", "phasechange"):
+        for ranks in (1, 2):
+            name = f"{model}, {ranks} rank{'s' if ranks > 1 else ''}"
+            out, straight = run(tmp, ranks, model=model, mode=0)
+            check(f"{name}: something happens",
+                  np.max(np.abs(straight["vx"])) > 1e-2 and np.max(np.abs(straight["f_sph[4]"])) > 100,
+                  f"max |vx| {np.max(np.abs(straight['vx'])):.3g} m/s, "
+                  f"max |sigma_zz| {np.max(np.abs(straight['f_sph[4]'])):.3g} Pa")
+            out, split = run(tmp, ranks, model=model, mode=1)
+            diff = difference(straight, split)
+            check(f"{name}: two runs = one", max(diff.values()) < 1e-12 and out.count(FRESH) == 1,
+                  ", ".join(f"{g} {d:.1e}" for g, d in diff.items())
+                  + f"; rates recomputed {out.count(FRESH)} time(s)")
+            run(tmp, ranks, model=model, mode=2)
+            out, restarted = run(tmp, ranks, model=model, mode=3)
+            diff = difference(straight, restarted)
+            check(f"{name}: restarted = one run", max(diff.values()) < 1e-12 and FRESH not in out,
+                  ", ".join(f"{g} {d:.1e}" for g, d in diff.items()))
+
+    # what the stored rates do not survive, said once in the log
+    INVALIDATE = [
+        ("a new pair style setting", "pair_style sph/granular 0.0125",
+         "the pair style settings changed since the last step: " + FRESH),
+        ("a new timestep", "timestep 1e-5", "the timestep changed since the last step: " + FRESH),
+        ("a new grain", "include new_grain.in",
+         "1 of 193 grains are new since the last step: their " + FRESH[4:]),
+    ]
+    with open(os.path.join(tmp, "new_grain.in"), "w") as f:
+        f.write("create_atoms 1 single 0.15 0.02 0.05 units box\ngroup sand type 1\n")
+    for name, command, message in INVALIDATE:
+        out, _ = run(tmp, 1, mode=1, between=command)
+        check(f"recomputed after {name}", out.count(message) == 1,
+              message if message in out else "no message")
+check.finish()
