@@ -70,6 +70,12 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::init_style()
 template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag, 0);
+  // the pair computes no energy: a per-atom energy (compute pe/atom) is zero, on the host
+  if (eflag_atom) {
+    memory->destroy(eatom);
+    memory->create(eatom, maxeatom, "pair:eatom");
+    for (int i = 0; i < maxeatom; ++i) eatom[i] = 0.0;
+  }
   if (vflag_atom) {
     memoryKK->destroy_kokkos(k_vatom, vatom);
     memoryKK->create_kokkos(k_vatom, vatom, maxvatom, "pair:vatom");
