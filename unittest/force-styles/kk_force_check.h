@@ -1,0 +1,30 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: the force check of the /kk copies of LAMMPS' pair-style harness.
+
+   The /kk pair sums a particle's neighbours over a full list, the plain pair over a
+   half list: the same terms in another order. A force component that cancels to
+   round-off (a dummy particle's tangential force where the grains' shear stress is
+   nearly zero, 1e-26 against a normal force of 1e-4) then differs by O(1) relative to
+   itself, which the harness' per-component relative error reports as a failure. Here
+   each component is compared relative to the atom's whole reference force, which is
+   round-off where the plain and /kk pairs agree to round-off.
+------------------------------------------------------------------------- */
+
+#ifndef GRANSPH_KK_FORCE_CHECK_H
+#define GRANSPH_KK_FORCE_CHECK_H
+
+#include <algorithm>
+#include <cmath>
+
+#define EXPECT_FORCE_LE_WITH_EPS(fi, ref, k, eps)                                        \
+  do {                                                                                   \
+    const double ref_k[3] = {(ref).x, (ref).y, (ref).z};                                 \
+    const double scale = std::sqrt(ref_k[0] * ref_k[0] + ref_k[1] * ref_k[1] +           \
+                                   ref_k[2] * ref_k[2]);                                 \
+    const double diff = std::fabs((fi)[k] - ref_k[k]);                                   \
+    const double err = (scale == 0.0) ? diff : diff / scale;                             \
+    stats.add(err);                                                                      \
+    EXPECT_PRED_FORMAT2(::testing::DoubleLE, err, eps);                                  \
+  } while (0);
+
+#endif
