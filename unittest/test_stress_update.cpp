@@ -133,3 +133,67 @@ TEST(DruckerPrager, StatesOutsideTheConeAreScaledOntoIt)
   const Sym3 a = outside.deviator(), b = r.deviator();
   EXPECT_NEAR(a.ddot(b) / std::sqrt(a.ddot(a) * b.ddot(b)), 1.0, 1e-12);
 }
+
+// The step of a grain in a thin layer sliding on the floor at 1 m/s over dx = 0.01 m: a
+// shear rate of 48/s (an elastic increment 60 times the strength per step) and, from
+// passing over the dummy particles' lattice, a small isochoric stretch across it.
+namespace {
+const double P_LAYER = 240.0;    // rho g dx
+const double TAU_LAYER = 3.0 * DP.alpha_phi * P_LAYER;
+const Sym3 S_LAYER{-P_LAYER, -P_LAYER, -P_LAYER, 0.0, TAU_LAYER, 0.0};    // at its strength
+const Sym3 D_SLIDING{2.0, 0.0, -2.0, 0.0, 24.0, 0.0};                      // 1/s
+const double DT_SLIDING = 2.6e-5;
+}    // namespace
+
+TEST(DruckerPrager, ReturnMappingEndsOnTheYieldSurfaceAfterALargeStep)
+{
+  Regime regime;
+  const Sym3 trial = jaumann_trial(S_LAYER, S_LAYER, D_SLIDING, Spin3::zero(), DP.K, DP.G, DT_SLIDING);
+  ASSERT_GT(sqrt(second_invariant(trial)), 50.0 * TAU_LAYER);
+  const Sym3 next = DP.update(S_LAYER, S_LAYER, D_SLIDING, Spin3::zero(), 0.0, DT_SLIDING, regime);
+  EXPECT_EQ(regime, PLASTIC);
+  EXPECT_NEAR(DP.mobilised_ratio(next), 1.0, 1e-12);
+  EXPECT_NEAR(next.trace(), trial.trace(), 1e-9 * P_LAYER);    // psi = 0: pressure kept
+  const Sym3 a = trial.deviator(), b = next.deviator();         // the deviator's direction
+  EXPECT_NEAR(a.ddot(b) / std::sqrt(a.ddot(a) * b.ddot(b)), 1.0, 1e-12);
+  // the shear stress that carries the layer's friction stays at nearly all of it
+  EXPECT_GT(next.xz, 0.98 * TAU_LAYER);
+}
+
+TEST(DruckerPrager, ReturnMappingWithDilatancyEndsOnTheYieldSurface)
+{
+  const DruckerPrager dilatant = DruckerPrager::from_material(E, NU, PHI, 10.0 * PI / 180.0, 0.0);
+  Regime regime;
+  const Sym3 next =
+      dilatant.update(S_LAYER, S_LAYER, D_SLIDING, Spin3::zero(), 0.0, DT_SLIDING, regime);
+  EXPECT_EQ(regime, PLASTIC);
+  EXPECT_NEAR(dilatant.yield_function(next), 0.0, 1e-9 * P_LAYER);
+  EXPECT_LT(next.trace(), S_LAYER.trace());    // dilatancy under confinement: more compressive
+}
+
+TEST(DruckerPrager, ReturnThroughTheApexLeavesNoStress)
+{
+  Regime regime;
+  const Sym3 next = DP.return_mapping(Sym3{50.0, -20.0, 10.0, 0.0, 300.0, 0.0}, regime);
+  EXPECT_LT(max_abs_diff(next, Sym3::zero()), 1e-12);
+  EXPECT_EQ(regime, DISCONNECTED);
+}
+
+TEST(DruckerPrager, PaperStepAgreesForSmallStepsAndLosesTheShearInLargeOnes)
+{
+  const DruckerPrager paper = DruckerPrager::from_material(E, NU, PHI, 0.0, 0.0, false, true);
+  Regime regime;
+  // a step whose elastic increment is small against the strength: the two agree to
+  // the explicit rate's first order
+  const double dt = 1e-9;
+  const Sym3 implicit = DP.update(S_LAYER, S_LAYER, D_SLIDING, Spin3::zero(), 0.0, dt, regime);
+  const Sym3 explicit_step =
+      paper.update(S_LAYER, S_LAYER, D_SLIDING, Spin3::zero(), 0.0, dt, regime);
+  EXPECT_LT(max_abs_diff(implicit, explicit_step), 1e-3 * TAU_LAYER);
+  // the sliding layer's step: the explicit rate removes the increment along the old
+  // stress and keeps the small stretch across it at its full elastic size, which then
+  // takes the direction of the returned stress: the shear stress is lost
+  const Sym3 lost =
+      paper.update(S_LAYER, S_LAYER, D_SLIDING, Spin3::zero(), 0.0, DT_SLIDING, regime);
+  EXPECT_LT(lost.xz, 0.5 * TAU_LAYER);
+}

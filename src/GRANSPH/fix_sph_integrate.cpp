@@ -80,6 +80,15 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
         material.dp_matching = GranSPHMaterial::SIMPLE_SHEAR;
       else
         error->all(FLERR, "{}: matching must be plane_strain or simple_shear", style_name);
+    } else if (key == "plastic") {
+      if (strcmp(style, "sph/elastoplastic") != 0 && strcmp(style, "sph/elastoplastic/kk") != 0)
+        error->all(FLERR, "{}: keyword plastic is for fix sph/elastoplastic only", style_name);
+      if (strcmp(arg[iarg + 1], "return") == 0)
+        material.dp_plastic = GranSPHMaterial::RETURN_MAPPING;
+      else if (strcmp(arg[iarg + 1], "paper") == 0)
+        material.dp_plastic = GranSPHMaterial::EXPLICIT_RATE;
+      else
+        error->all(FLERR, "{}: plastic must be return or paper", style_name);
     } else if (key == "geostatic") {
       geostatic_flag = 1;
       surface_height = utils::numeric(FLERR, arg[iarg + 1], false, lmp);

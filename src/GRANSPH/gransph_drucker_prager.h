@@ -4,6 +4,18 @@
    Stress is tension positive, so the yield function reads
        f = sqrt(J2) + alpha_phi I1 - k_c
    (the paper prints the compression-positive form). Usable on host and device.
+
+   Two ways to take a step (fix sph/elastoplastic keyword plastic):
+   - return mapping (default): the elastic trial, then the implicit (backward Euler)
+     return along eq. 32's plastic flow, which lands on the yield surface whatever the
+     size of the step;
+   - the paper's: eq. 32 with the plastic rate of eq. 33 evaluated at the step's start,
+     then Bui's scaling of states left outside the cone. With the time steps of SPH the
+     elastic increment of one step can be many times the strength (a layer sliding on
+     the floor at 1 m/s, dx = 0.01 m: 2 G gamma_dot dt = 10 kPa against 0.1 kPa), and a
+     dilating step (tr d > 0) then makes the explicit plastic correction overshoot into
+     the cone: a thin sliding layer holds a fraction of its strength
+     (validation/basal_friction.md).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_DRUCKER_PRAGER_H
@@ -18,6 +30,7 @@ struct DruckerPrager {
   double alpha_phi;     // eq. 30
   double k_c;           // eq. 31
   double sin_psi;       // dilatancy angle
+  bool explicit_rate;   // the paper's explicit plastic rate instead of the return mapping
 
   // alpha_phi and k_c from friction angle phi and dilatancy psi (radians) and cohesion c:
   // Bui et al.'s plane-strain matching (eqs. 30-31, the paper's), under which a layer in
@@ -26,18 +39,20 @@ struct DruckerPrager {
   // is coaxial and deviatoric, so the normal stresses are equal in steady simple shear).
   KOKKOS_INLINE_FUNCTION static DruckerPrager from_material(double E, double nu, double phi,
                                                             double psi, double c,
-                                                            bool simple_shear = false)
+                                                            bool simple_shear = false,
+                                                            bool explicit_rate = false)
   {
     const double tphi = tan(phi);
     const double root = simple_shear ? 3.0 : sqrt(9.0 + 12.0 * tphi * tphi);
     return {E / (3.0 * (1.0 - 2.0 * nu)), E / (2.0 * (1.0 + nu)), tphi / root,
-            (simple_shear ? 1.0 : 3.0 / root) * c, sin(psi)};
+            (simple_shear ? 1.0 : 3.0 / root) * c, sin(psi), explicit_rate};
   }
 
-  // from a material record with E, nu, phi, psi, c and dp_matching (host)
+  // from a material record with E, nu, phi, psi, c, dp_matching and dp_plastic (host)
   template <class Material> static DruckerPrager from(const Material &m)
   {
-    return from_material(m.E, m.nu, m.phi, m.psi, m.c, m.dp_matching == Material::SIMPLE_SHEAR);
+    return from_material(m.E, m.nu, m.phi, m.psi, m.c, m.dp_matching == Material::SIMPLE_SHEAR,
+                         m.dp_plastic == Material::EXPLICIT_RATE);
   }
 
   KOKKOS_INLINE_FUNCTION double yield_function(const Sym3 &s) const
@@ -100,16 +115,37 @@ struct DruckerPrager {
     return lambda * (Sym3::iso(9.0 * K * sin_psi) + (G / sqrt_j2) * dev);
   }
 
-  // A step of eq. 32 of length dt from s0 with the rate evaluated at s (see
-  // jaumann_trial), then back into the admissible region; the stress-model
-  // interface of gransph_stress_model.h. This model ignores the density.
+  // The implicit return of an elastic trial state along eq. 32's plastic flow: with
+  // dlambda = f_trial / (G + 27 alpha_phi K sin(psi)),
+  //   sigma = trial - dlambda (9 K sin(psi) I + G s_trial / sqrt(J2_trial))
+  // lies on the yield surface (with psi = 0: the deviator scaled at constant pressure). A
+  // return past the cone's axis keeps no deviator; tension beyond the apex is cut as Bui
+  // does.
+  KOKKOS_INLINE_FUNCTION Sym3 return_mapping(const Sym3 &trial, Regime &regime) const
+  {
+    regime = ELASTIC;
+    const double f = yield_function(trial);
+    const double sqrt_j2 = sqrt(second_invariant(trial));
+    if (f <= 0.0 || sqrt_j2 == 0.0) return return_to_cone(trial, regime);
+    const double dlambda = f / (G + 27.0 * alpha_phi * K * sin_psi);
+    const double scale = 1.0 - dlambda * G / sqrt_j2;
+    const Sym3 pressure = Sym3::iso(trial.trace() / 3.0 - 9.0 * K * sin_psi * dlambda);
+    regime = PLASTIC;
+    return return_to_cone(pressure + fmax(scale, 0.0) * trial.deviator(), regime);
+  }
+
+  // A step of length dt from s0 with the rate evaluated at s (see jaumann_trial), back
+  // into the admissible region as explicit_rate says; the stress-model interface of
+  // gransph_stress_model.h. This model ignores the density.
   KOKKOS_INLINE_FUNCTION Sym3 update(const Sym3 &s0, const Sym3 &s, const Sym3 &d,
                                      const Spin3 &w, double /*rho*/, double dt,
                                      Regime &regime) const
   {
+    const Sym3 trial = jaumann_trial(s0, s, d, w, K, G, dt);
+    if (!explicit_rate) return return_mapping(trial, regime);
     const Sym3 plastic = plastic_rate(s, d, dt);
     regime = plastic.ddot(plastic) > 0.0 ? PLASTIC : ELASTIC;
-    return return_to_cone(jaumann_trial(s0, s, d, w, K, G, dt) - dt * plastic, regime);
+    return return_to_cone(trial - dt * plastic, regime);
   }
 };
 

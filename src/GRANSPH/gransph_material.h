@@ -28,6 +28,10 @@ struct GranSPHMaterial {
   // file: fix sph/elastoplastic's keyword matching)
   enum Matching { PLANE_STRAIN, SIMPLE_SHEAR };
   Matching dp_matching = PLANE_STRAIN;
+  // How a Drucker-Prager step returns to the yield surface (fix sph/elastoplastic's
+  // keyword plastic): implicitly, or with the paper's explicit plastic rate (eqs. 32-33)
+  enum PlasticStep { RETURN_MAPPING, EXPLICIT_RATE };
+  PlasticStep dp_plastic = RETURN_MAPPING;
 
   double bulk_modulus() const { return E / (3.0 * (1.0 - 2.0 * nu)); }
   double shear_modulus() const { return E / (2.0 * (1.0 + nu)); }
