@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 using namespace LAMMPS_NS;
 
@@ -49,7 +50,7 @@ GranSPHMaterial GranSPHMaterial::read(LAMMPS *lmp, const std::string &file,
         double line_values[NPARAMS - 1];
         for (double &v : line_values) v = words.next_double();
         if (material != name || found) continue;
-        std::copy(line_values, line_values + NPARAMS - 1, values);
+        std::copy(std::begin(line_values), std::end(line_values), values);
         found = 1;
       } catch (TokenizerException &e) {
         lmp->error->one(FLERR, "{}: material file {}, material {}: {} on line: {}", style, file,
