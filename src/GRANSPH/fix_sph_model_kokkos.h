@@ -43,9 +43,10 @@ class FixSPHModelKokkos : public FixSPHModel<Model>, public KokkosBase, public S
   void unpack_restart(int, int) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
-  int pack_forward_comm_fix_kokkos(int, DAT::tdual_int_2d, int, DAT::tdual_xfloat_1d &, int,
-                                   int *) override;
-  void unpack_forward_comm_fix_kokkos(int, int, DAT::tdual_xfloat_1d &) override;
+  GRANSPH_KOKKOS_FIX_FORWARD_COMM
+  int pack_forward_comm_device(int, const typename GRANSPHCompat::KokkosTypes<DeviceType>::SendList &,
+                               GRANSPHCompat::tdual_comm_buffer &);
+  void unpack_forward_comm_device(int, int, GRANSPHCompat::tdual_comm_buffer &);
 
   // device kernels (public: CUDA lambdas may not live in private members)
   void step(int stage);
