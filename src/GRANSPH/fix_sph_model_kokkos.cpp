@@ -86,6 +86,7 @@ FixSPHModelKokkos<DeviceType, Model>::FixSPHModelKokkos(LAMMPS *lmp, int narg, c
 {
   this->kokkosable = 1;
   this->forward_comm_device = 1;
+  GRANSPHCompat::enable_device_exchange(this, int(FSI::NSTATE) + int(FSI::NRATES) + int(FSI::NSTART));
   this->atomKK = (AtomKokkos *) this->atom;
   this->execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
   this->datamask_read = X_MASK | V_MASK | F_MASK | MASK_MASK | RMASS_MASK | TYPE_MASK;
