@@ -94,8 +94,10 @@ sid_apt_update() {
 check_pins() {
   local p missing=()
   for p in "${SID_PINS[@]}"; do
+    # (apt-cache show PKG=VER exits 0 for a version it does not have: ask madison)
     # shellcheck disable=SC2046
-    apt-cache $(sid_apt_opts) show "$p" >/dev/null 2>&1 || missing+=("$p")
+    apt-cache $(sid_apt_opts) madison "${p%%=*}" |
+      awk -v v="${p#*=}" '$3 == v && /Packages/ {found = 1} END {exit !found}' || missing+=("$p")
   done
   if [ ${#missing[@]} -gt 0 ]; then
     local p2
