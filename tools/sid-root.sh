@@ -156,7 +156,9 @@ fix_kokkos_config() {
 }
 
 fetch_lammps() {
-  local orig=$SID/src/$LAMMPS_ORIG sum
+  local orig=$SID/src/$LAMMPS_ORIG sum src=$ROOT/opt/lammps
+  # unpacked from a checked tarball before: nothing to fetch (no network needed)
+  [ -f "$src/.unpacked-$LAMMPS_DEB" ] && return
   sid_apt_update
   # the sha256 sid's (signed) Sources index gives for the orig tarball
   # shellcheck disable=SC2046
@@ -174,13 +176,10 @@ fetch_lammps() {
        "lammps=$LAMMPS_DEB" >/dev/null 2>&1 || true)
   fi
   echo "$sum  $orig" | sha256sum --check --quiet || die "checksum mismatch for $orig"
-  local src=$ROOT/opt/lammps
-  if [ ! -f "$src/.unpacked-$LAMMPS_DEB" ]; then
-    log "unpacking LAMMPS $LAMMPS_DEB"
-    rm -rf "$src" && mkdir -p "$src"
-    timed "unpack LAMMPS" tar -xzf "$orig" -C "$src"
-    touch "$src/.unpacked-$LAMMPS_DEB"
-  fi
+  log "unpacking LAMMPS $LAMMPS_DEB"
+  rm -rf "$src" && mkdir -p "$src"
+  timed "unpack LAMMPS" tar -xzf "$orig" -C "$src"
+  touch "$src/.unpacked-$LAMMPS_DEB"
 }
 
 # KOKKOS (the /kk styles; OpenMP, Debian's Kokkos), PLUGIN (loads us), SPH (the
