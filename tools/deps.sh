@@ -25,6 +25,9 @@ APT_PACKAGES=(build-essential cmake ninja-build ccache dpkg-dev xz-utils
 
 log() { printf '[deps] %s\n' "$*"; }
 
+# shellcheck source=tools/apt-mirror.sh
+source "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/apt-mirror.sh"
+
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
 
 install_apt_packages() {
@@ -34,10 +37,12 @@ install_apt_packages() {
   done
   if ! grep -rqs '^Types:.*deb-src' /etc/apt/sources.list.d/ &&
      ! grep -qs '^deb-src .* bookworm ' /etc/apt/sources.list; then
-    log "enabling deb-src for bookworm"
-    as_root tee /etc/apt/sources.list.d/gransph-src.sources >/dev/null <<'SRC'
+    # the deb-src entry uses the mirror of the machine's own bookworm `deb` entry
+    local mirror; mirror=$(debian_mirror_uri bookworm)
+    log "enabling deb-src for bookworm ($mirror)"
+    as_root tee /etc/apt/sources.list.d/gransph-src.sources >/dev/null <<SRC
 Types: deb-src
-URIs: http://deb.debian.org/debian
+URIs: $mirror
 Suites: bookworm
 Components: main
 Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg

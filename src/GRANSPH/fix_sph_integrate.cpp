@@ -6,6 +6,7 @@
 
 #include "fix_sph_integrate.h"
 
+#include "gransph_lammps_compat.h"
 #include "gransph_integrator.h"
 
 #include "atom.h"
@@ -277,7 +278,7 @@ void FixSPHIntegrate::restart(char *buf)
 
 void FixSPHIntegrate::forward_comm_state()
 {
-  comm->forward_comm_fix(this);
+  GRANSPHCompat::forward_comm_fix(comm, this);
 }
 
 double FixSPHIntegrate::smoothing_length() const

@@ -23,14 +23,14 @@ namespace {
 
 // One predictor (PREDICT) or corrector step of every granular particle.
 template <class DeviceType, class Model, bool PREDICT> struct StepFunctor {
-  typedef ArrayTypes<DeviceType> AT;
+  typedef GRANSPHCompat::KokkosTypes<DeviceType> KT;
   Model model;
-  typename AT::t_x_array x;
-  typename AT::t_v_array v;
-  typename AT::t_f_array_randomread f;
-  typename AT::t_int_1d_randomread mask, type;
-  typename AT::t_float_1d_randomread rmass, mass;
-  typename AT::t_float_2d state, rates, start;
+  typename KT::t_x x;
+  typename KT::t_v v;
+  typename KT::t_f_const f;
+  typename KT::t_int_const mask, type;
+  typename KT::t_mass_const rmass, mass;
+  typename KT::t_state state, rates, start;
   int groupbit, use_rmass;
   double dt, ftm2v;
 
@@ -86,6 +86,7 @@ FixSPHModelKokkos<DeviceType, Model>::FixSPHModelKokkos(LAMMPS *lmp, int narg, c
 {
   this->kokkosable = 1;
   this->forward_comm_device = 1;
+  GRANSPHCompat::enable_device_exchange(this, int(FSI::NSTATE) + int(FSI::NRATES) + int(FSI::NSTART));
   this->atomKK = (AtomKokkos *) this->atom;
   this->execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
   this->datamask_read = X_MASK | V_MASK | F_MASK | MASK_MASK | RMASS_MASK | TYPE_MASK;
@@ -112,7 +113,7 @@ template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Mode
   if (!this->force->pair->kokkosable)
     this->error->all(FLERR, "Fix {} needs pair_style sph/granular/kk", this->style);
   // LAMMPS 29Sep2021's fix property/atom/kk keeps rmass on the host only
-  if (this->atom->rmass && this->atomKK->k_rmass.h_view.data() != this->atom->rmass)
+  if (this->atom->rmass && this->atomKK->k_rmass.view_host().data() != this->atom->rmass)
     this->error->all(FLERR, "Fix {}: per-atom masses of fix property/atom are not available "
                      "to Kokkos styles in this LAMMPS version", this->style);
   this->atomKK->k_mass.template modify<LMPHostType>();
@@ -287,27 +288,27 @@ template <class DeviceType, class Model>
 void FixSPHModelKokkos<DeviceType, Model>::forward_comm_state()
 {
   k_state.template sync<DeviceType>();
-  this->comm->forward_comm_fix(this);
+  GRANSPHCompat::forward_comm_fix(this->comm, this);
 }
 
 template <class DeviceType, class Model>
-int FixSPHModelKokkos<DeviceType, Model>::pack_forward_comm_fix_kokkos(
-    int n, DAT::tdual_int_2d k_sendlist, int iswap, DAT::tdual_xfloat_1d &k_buf, int, int *)
+int FixSPHModelKokkos<DeviceType, Model>::pack_forward_comm_device(
+    int n, const typename GRANSPHCompat::KokkosTypes<DeviceType>::SendList &sendlist,
+    GRANSPHCompat::tdual_comm_buffer &k_buf)
 {
-  auto sendlist = k_sendlist.view<DeviceType>();
   auto buf = k_buf.view<DeviceType>();
   auto state = k_state.template view<DeviceType>();
   Kokkos::parallel_for(
       Kokkos::RangePolicy<DeviceType>(0, n), LAMMPS_LAMBDA(const int i) {
-        const int j = sendlist(iswap, i);
+        const int j = sendlist(i);
         for (int k = 0; k < FSI::NCOMM; ++k) buf(FSI::NCOMM * i + k) = state(j, k);
       });
   return n * FSI::NCOMM;
 }
 
 template <class DeviceType, class Model>
-void FixSPHModelKokkos<DeviceType, Model>::unpack_forward_comm_fix_kokkos(
-    int n, int first, DAT::tdual_xfloat_1d &k_buf)
+void FixSPHModelKokkos<DeviceType, Model>::unpack_forward_comm_device(
+    int n, int first, GRANSPHCompat::tdual_comm_buffer &k_buf)
 {
   auto buf = k_buf.view<DeviceType>();
   auto state = k_state.template view<DeviceType>();

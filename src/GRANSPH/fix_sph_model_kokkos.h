@@ -2,9 +2,10 @@
    GRANSPH: Kokkos twin of FixSPHModel<Model>: the per-atom SPH state lives in
    DualViews; predictor, corrector, stress update, CFL reduction and forward
    communication run on the device with the same per-particle functions as the
-   plain styles (gransph_integrator.h). Migration between ranks, restarts and
-   creation of atoms use the host copies (LAMMPS 29Sep2021 exchanges fix data
-   through the classic host path).
+   plain styles (gransph_integrator.h). Migration between ranks and atom sorting
+   move the state on the device where LAMMPS can (2025+, gransph_kokkos_compat.h),
+   through the host copies in LAMMPS 29Sep2021; restarts and creation of atoms
+   use the host copies.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_SPH_MODEL_KOKKOS_H
@@ -43,9 +44,11 @@ class FixSPHModelKokkos : public FixSPHModel<Model>, public KokkosBase, public S
   void unpack_restart(int, int) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
-  int pack_forward_comm_fix_kokkos(int, DAT::tdual_int_2d, int, DAT::tdual_xfloat_1d &, int,
-                                   int *) override;
-  void unpack_forward_comm_fix_kokkos(int, int, DAT::tdual_xfloat_1d &) override;
+  GRANSPH_KOKKOS_FIX_FORWARD_COMM
+  GRANSPH_KOKKOS_FIX_DEVICE_EXCHANGE(k_state, k_rates, k_start)
+  int pack_forward_comm_device(int, const typename GRANSPHCompat::KokkosTypes<DeviceType>::SendList &,
+                               GRANSPHCompat::tdual_comm_buffer &);
+  void unpack_forward_comm_device(int, int, GRANSPHCompat::tdual_comm_buffer &);
 
   // device kernels (public: CUDA lambdas may not live in private members)
   void step(int stage);

@@ -15,6 +15,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "gransph_lammps_compat.h"
 #include "region.h"
 #include "update.h"
 
@@ -28,11 +29,11 @@ using namespace FixConst;
 ------------------------------------------------------------------------- */
 
 FixSPHOutflow::FixSPHOutflow(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), idregion(nullptr), iregion(-1), every(0), nremoved(0), mass_removed(0.0)
+    Fix(lmp, narg, arg), idregion(nullptr), region(nullptr), every(0), nremoved(0), mass_removed(0.0)
 {
   if (narg < 4) error->all(FLERR, "Illegal fix sph/outflow command: need a region ID");
-  iregion = domain->find_region(arg[3]);
-  if (iregion < 0) error->all(FLERR, "Fix sph/outflow: region {} does not exist", arg[3]);
+  region = GRANSPHCompat::find_region(domain, arg[3]);
+  if (!region) error->all(FLERR, "Fix sph/outflow: region {} does not exist", arg[3]);
   idregion = utils::strdup(arg[3]);
 
   for (int iarg = 4; iarg < narg; iarg += 2) {
@@ -69,8 +70,8 @@ int FixSPHOutflow::setmask()
 
 void FixSPHOutflow::init()
 {
-  iregion = domain->find_region(idregion);
-  if (iregion < 0) error->all(FLERR, "Fix sph/outflow: region {} does not exist", idregion);
+  region = GRANSPHCompat::find_region(domain, idregion);
+  if (!region) error->all(FLERR, "Fix sph/outflow: region {} does not exist", idregion);
   // copying the last atom into a deleted one's slot would break the ordering
   if (atom->firstgroup >= 0)
     error->all(FLERR, "Fix sph/outflow cannot be used with atom_modify first");
@@ -101,7 +102,6 @@ void FixSPHOutflow::pre_exchange()
 
 void FixSPHOutflow::remove_outside()
 {
-  Region *region = domain->regions[iregion];
   region->prematch();
   double **x = atom->x;
   const int *mask = atom->mask;
@@ -145,7 +145,6 @@ void FixSPHOutflow::remove_outside()
 
 void FixSPHOutflow::warn_if_region_leaves_box() const
 {
-  const Region *region = domain->regions[iregion];
   if (comm->me != 0 || !region->bboxflag || domain->triclinic) return;
   const double lo[3] = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
   const double hi[3] = {region->extent_xhi, region->extent_yhi, region->extent_zhi};

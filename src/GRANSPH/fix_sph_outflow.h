@@ -29,7 +29,7 @@ class FixSPHOutflow : public Fix {
 
  private:
   char *idregion;
-  int iregion;
+  class Region *region;    // looked up again at init
   int every;              // reneighbor at least every this many steps (0: as LAMMPS decides)
   bigint nremoved;        // atoms deleted so far, all ranks
   double mass_removed;    // their mass

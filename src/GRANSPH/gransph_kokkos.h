@@ -10,16 +10,20 @@
 
 #include "fix_sph_integrate.h"
 #include "gransph_kernel.h"
+#include "gransph_kokkos_compat.h"
 #include "gransph_pair_terms.h"
-#include "kokkos_type.h"
+
+#include <type_traits>
 
 namespace LAMMPS_NS {
 
 // The arrays of FixSPHIntegrate (same columns) on host and device.
 class SPHStateKokkos {
  public:
-  virtual ~SPHStateKokkos() = default;
-  DAT::tdual_float_2d k_state, k_rates, k_start;
+  // as nothrow as Pointers::~Pointers() (noexcept(false) in current LAMMPS, noexcept in
+  // 29Sep2021): a fix deriving from both may not be looser than either base
+  virtual ~SPHStateKokkos() noexcept(std::is_nothrow_destructible<Pointers>::value) {}
+  GRANSPHCompat::tdual_state k_state, k_rates, k_start;
 };
 
 // Grains cost far more than dummy particles and lie in blocks of memory (creation

@@ -16,6 +16,7 @@
 #include "error.h"
 #include "fix_sph_integrate.h"
 #include "force.h"
+#include "gransph_lammps_compat.h"
 #include "gransph_neighbour_sums.h"
 #include "memory.h"
 #include "modify.h"
@@ -23,6 +24,8 @@
 #include "neigh_request.h"
 #include "neighbor.h"
 #include "update.h"
+
+#include <cstring>
 
 using namespace LAMMPS_NS;
 using GRANSPH::PairParticle;
@@ -273,8 +276,7 @@ void PairSPHGranular::init_style()
   visc.c0 = sqrt(integrator->material.bulk_modulus() / integrator->material.rho0);
   // a half list without Newton's third law across ranks: no reverse communication of
   // the rates (a pair with a ghost is computed on both ranks)
-  const int irequest = neighbor->request(this, instance_me);
-  neighbor->requests[irequest]->newton = 2;
+  GRANSPHCompat::request_half_list_newton_off(neighbor, this, instance_me);
 }
 
 double PairSPHGranular::init_one(int i, int j)

@@ -54,13 +54,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::init_style()
   if (!dynamic_cast<SPHStateKokkos *>(integrator))
     error->all(FLERR, "Pair style sph/granular/kk needs the /kk variant of the GRANSPH integrator");
   // a full list: each particle writes only to itself, no atomics
-  auto request = neighbor->requests[neighbor->nrequest - 1];
-  request->half = 0;
-  request->full = 1;
-  request->newton = 0;
-  request->kokkos_host =
-      std::is_same<DeviceType, LMPHostType>::value && !std::is_same<DeviceType, LMPDeviceType>::value;
-  request->kokkos_device = std::is_same<DeviceType, LMPDeviceType>::value;
+  GRANSPHCompat::kokkos_full_list<DeviceType>(neighbor, this);
   atomKK->k_mass.template modify<LMPHostType>();
   atomKK->k_mass.template sync<DeviceType>();
 }
@@ -119,7 +113,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   atomKK->modified(execution_space, datamask_modify);
   if (vflag_atom) {
     k_vatom.template modify<DeviceType>();
-    k_vatom.template sync<LMPHostType>();
+    k_vatom.sync_host();
   }
 }
 

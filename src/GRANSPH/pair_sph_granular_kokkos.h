@@ -37,7 +37,7 @@ template <class DeviceType> class PairSPHGranularKokkos : public PairSPHGranular
   void grains(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
 
  private:
-  DAT::tdual_virial_array k_vatom;
+  GRANSPHCompat::tdual_virial k_vatom;
   Kokkos::View<GRANSPH::PairParticle *, DeviceType> d_particles;    // owned and ghost atoms
 };
 

@@ -13,8 +13,12 @@
 #ifndef GRANSPH_KK_FORCE_CHECK_H
 #define GRANSPH_KK_FORCE_CHECK_H
 
+#include "error_stats.h"
+#include "gtest/gtest.h"
+
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #define EXPECT_FORCE_LE_WITH_EPS(fi, ref, k, eps)                                        \
   do {                                                                                   \
@@ -26,5 +30,20 @@
     stats.add(err);                                                                      \
     EXPECT_PRED_FORMAT2(::testing::DoubleLE, err, eps);                                  \
   } while (0);
+
+// LAMMPS 2025+, whose kokkos_omp check calls EXPECT_FORCES of test_main.cpp: the same
+// check of every atom, each component relative to the atom's whole reference force
+template <class AtomT, class RefT>
+void expect_forces_relative(const std::string &name, AtomT *atom, const RefT &f_ref, double eps)
+{
+  SCOPED_TRACE("EXPECT_FORCES (relative to the atom's force): " + name);
+  double **f = atom->f;
+  const auto *tag = atom->tag;
+  const int nlocal = atom->nlocal;
+  ASSERT_EQ(nlocal + 1, f_ref.size());
+  ErrorStats stats;
+  for (int i = 0; i < nlocal; ++i)
+    for (int k = 0; k < 3; ++k) EXPECT_FORCE_LE_WITH_EPS(f[i], f_ref[tag[i]], k, eps)
+}
 
 #endif
