@@ -72,24 +72,19 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
         cfl = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
         if (cfl <= 0.0 || cfl > 1.0) error->all(FLERR, "{}: cfl must be in (0, 1] or none", style_name);
       }
-    } else if (key == "matching") {
-      if (strcmp(style, "sph/elastoplastic") != 0 && strcmp(style, "sph/elastoplastic/kk") != 0)
-        error->all(FLERR, "{}: keyword matching is for fix sph/elastoplastic only", style_name);
-      if (strcmp(arg[iarg + 1], "plane_strain") == 0)
-        material.dp_matching = GranSPHMaterial::PLANE_STRAIN;
-      else if (strcmp(arg[iarg + 1], "simple_shear") == 0)
-        material.dp_matching = GranSPHMaterial::SIMPLE_SHEAR;
+    } else if (key == "matching" || key == "plastic") {
+      if (!utils::strmatch(style, "^sph/elastoplastic"))
+        error->all(FLERR, "{}: keyword {} is for fix sph/elastoplastic only", style_name, key);
+      const std::string value = arg[iarg + 1];
+      if (key == "matching" && (value == "plane_strain" || value == "simple_shear"))
+        material.dp_matching =
+            value == "plane_strain" ? GranSPHMaterial::PLANE_STRAIN : GranSPHMaterial::SIMPLE_SHEAR;
+      else if (key == "plastic" && (value == "return" || value == "paper"))
+        material.dp_plastic =
+            value == "return" ? GranSPHMaterial::RETURN_MAPPING : GranSPHMaterial::EXPLICIT_RATE;
       else
-        error->all(FLERR, "{}: matching must be plane_strain or simple_shear", style_name);
-    } else if (key == "plastic") {
-      if (strcmp(style, "sph/elastoplastic") != 0 && strcmp(style, "sph/elastoplastic/kk") != 0)
-        error->all(FLERR, "{}: keyword plastic is for fix sph/elastoplastic only", style_name);
-      if (strcmp(arg[iarg + 1], "return") == 0)
-        material.dp_plastic = GranSPHMaterial::RETURN_MAPPING;
-      else if (strcmp(arg[iarg + 1], "paper") == 0)
-        material.dp_plastic = GranSPHMaterial::EXPLICIT_RATE;
-      else
-        error->all(FLERR, "{}: plastic must be return or paper", style_name);
+        error->all(FLERR, "{}: {} must be {}", style_name, key,
+                   key == "matching" ? "plane_strain or simple_shear" : "return or paper");
     } else if (key == "geostatic") {
       geostatic_flag = 1;
       surface_height = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
