@@ -13,7 +13,7 @@ phase-change model slides above atan(mu_s).
 Holding means not accelerating (|a| < 0.02 m/s^2, against the 0.3 m/s^2 of free sliding
 1.5 degrees above the slide angle) at a speed left from loading the stress-free layer
 below 0.01 m/s: a single particle layer creeps at a few mm/s after its loading, by more
-the closer the slope is to the slide angle (0.2 mm/s at 15 degrees, 3.5 mm/s at 28.1 for
+the closer the slope is to the slide angle (0.2 mm/s at 15 degrees, 3.9 mm/s at 28.1 for
 plane-strain Drucker-Prager at dx = 0.02), where two layers and more stop within 0.5 mm/s.
 
   test_slope.py MODEL [fix keywords ...]
