@@ -105,18 +105,31 @@ namespace GRANSPHCompat {
   template <class DeviceType> struct DeviceExchange {
     typedef ArrayTypes<DeviceType> AT;
 
+    // the three arrays on DeviceType, before and after a kernel that moves their rows
+    static void sync_rows(tdual_state &k_a, tdual_state &k_b, tdual_state &k_c)
+    {
+      for (tdual_state *k : {&k_a, &k_b, &k_c}) k->template sync<DeviceType>();
+    }
+    static void modify_rows(tdual_state &k_a, tdual_state &k_b, tdual_state &k_c)
+    {
+      for (tdual_state *k : {&k_a, &k_b, &k_c}) k->template modify<DeviceType>();
+    }
+    // the exchange buffer as one flat array of doubles
+    static typename AT::t_double_1d_um flat(DAT::tdual_double_2d_lr &k_buf)
+    {
+      k_buf.template sync<DeviceType>();
+      return typename AT::t_double_1d_um(k_buf.template view<DeviceType>().data(),
+                                         k_buf.extent(0) * k_buf.extent(1));
+    }
+
     static int pack(int nsend, DAT::tdual_double_2d_lr &k_buf, DAT::tdual_int_1d k_sendlist,
                     DAT::tdual_int_1d k_copylist, ExecutionSpace space, tdual_state &k_a,
                     tdual_state &k_b, tdual_state &k_c)
     {
-      k_buf.template sync<DeviceType>();
       k_sendlist.template sync<DeviceType>();
       k_copylist.template sync<DeviceType>();
-      k_a.template sync<DeviceType>();
-      k_b.template sync<DeviceType>();
-      k_c.template sync<DeviceType>();
-      const typename AT::t_double_1d_um buf(k_buf.template view<DeviceType>().data(),
-                                            k_buf.extent(0) * k_buf.extent(1));
+      sync_rows(k_a, k_b, k_c);
+      const auto buf = flat(k_buf);
       const auto sendlist = k_sendlist.template view<DeviceType>();
       const auto copylist = k_copylist.template view<DeviceType>();
       const auto a = k_a.template view<DeviceType>();
@@ -144,9 +157,7 @@ namespace GRANSPHCompat {
         k_buf.sync_host();
       else
         k_buf.sync_device();
-      k_a.template modify<DeviceType>();
-      k_b.template modify<DeviceType>();
-      k_c.template modify<DeviceType>();
+      modify_rows(k_a, k_b, k_c);
       return nsend * (row + 1);
     }
 
@@ -154,13 +165,9 @@ namespace GRANSPHCompat {
                        int nrecv1, int nextrarecv1, tdual_state &k_a, tdual_state &k_b,
                        tdual_state &k_c)
     {
-      k_buf.template sync<DeviceType>();
       k_indices.template sync<DeviceType>();
-      k_a.template sync<DeviceType>();
-      k_b.template sync<DeviceType>();
-      k_c.template sync<DeviceType>();
-      const typename AT::t_double_1d_um buf(k_buf.template view<DeviceType>().data(),
-                                            k_buf.extent(0) * k_buf.extent(1));
+      sync_rows(k_a, k_b, k_c);
+      const auto buf = flat(k_buf);
       const auto indices = k_indices.template view<DeviceType>();
       const auto a = k_a.template view<DeviceType>();
       const auto b = k_b.template view<DeviceType>();
@@ -176,9 +183,7 @@ namespace GRANSPHCompat {
             for (int k = 0; k < nb; ++k) b(index, k) = buf(m++);
             for (int k = 0; k < nc; ++k) c(index, k) = buf(m++);
           });
-      k_a.template modify<DeviceType>();
-      k_b.template modify<DeviceType>();
-      k_c.template modify<DeviceType>();
+      modify_rows(k_a, k_b, k_c);
     }
 
     // atom sorting permutes the rows on the device (as fix neigh/history/kk)
