@@ -7,6 +7,8 @@
      const GRANSPH::PairParticle &particle(int i)
      bool   granular(int i), wall(int i)
      GRANSPH::WendlandC2 kernel; GRANSPH::Viscosity visc
+     bool   wall_normal  (dummy neighbours enter drho and grad_v along the wall
+                          normal only: ParticleRates::add_wall, finish_walls)
 
    Over a full neighbour list (the Kokkos styles: no atomics) each loop runs
    over one particle i and writes only to i. Over a half list with newton off
@@ -78,7 +80,10 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     PairGeometry g;
     if (!pair_geometry(p, pi, pj, p.granular(j) || p.visc.walls, g)) continue;
     const PairTerms t = g.terms(pi, pj);
-    r.add(t, pj, 1.0);
+    if (p.wall_normal && p.wall(j))
+      r.add_wall(t, pj, 1.0);
+    else
+      r.add(t, pj, 1.0);
     if (vir) {
       const double mm = pi.mass * pj.mass;
       const double fij[3] = {mm * t.tg[0], mm * t.tg[1], mm * t.tg[2]};
@@ -176,8 +181,17 @@ KOKKOS_INLINE_FUNCTION void add_pair_rates(const Particles &p, int i, int nlocal
     PairGeometry g;
     if (!pair_geometry(p, pi, pj, (i_granular && p.granular(j)) || p.visc.walls, g)) continue;
     const PairTerms t = g.terms(pi, pj);
-    ri.add(t, pj, 1.0);
-    if (j < nlocal) rates[j].add(t, pi, -1.0);
+    // a grain's dummy neighbour enters along the wall normal only, if so set
+    if (p.wall_normal && p.wall(j))
+      ri.add_wall(t, pj, 1.0);
+    else
+      ri.add(t, pj, 1.0);
+    if (j < nlocal) {
+      if (p.wall_normal && !i_granular)
+        rates[j].add_wall(t, pi, -1.0);
+      else
+        rates[j].add(t, pi, -1.0);
+    }
     if (want_virial) {
       const double mm = pi.mass * pj.mass;
       const double fij[3] = {mm * t.tg[0], mm * t.tg[1], mm * t.tg[2]};

@@ -130,6 +130,12 @@ struct ParticleRates {
   Sym3 shape;             // sum_j m_j/rho_j x_ji (x) grad_i W_ij: I inside the material
   double w_sum;           // sum_j m_j/rho_j W_ij
   double visc_w;          // sum_j m_j/rho_j W_ij rho_i rho_j Pi_ij / 2
+  // The dummy neighbours' share of drho and grad_v, kept apart (add_wall) to be taken
+  // along the wall normal only (finish_walls): sum_d m_d v_id (x) grad_i W_id, the
+  // grad_v sum, and sum_d m_d/rho_d x_id W_id, whose direction is the wall normal.
+  double wall_drho[3][3];
+  double wall_grad_v[3][3];
+  double wall_offset[3];
 
   // Below this determinant of `shape` (the full-support value is 1; a flat free
   // surface has about 0.5) a particle has too few neighbours for the correction.
@@ -137,20 +143,50 @@ struct ParticleRates {
 
   KOKKOS_INLINE_FUNCTION static ParticleRates zero()
   {
-    return {0.0, {0.0, 0.0, 0.0}, {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
-            Sym3::zero(), 0.0, 0.0};
+    return {0.0,
+            {0.0, 0.0, 0.0},
+            {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
+            Sym3::zero(),
+            0.0,
+            0.0,
+            {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
+            {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
+            {0.0, 0.0, 0.0}};
   }
 
   // the terms of a pair with `other`: side +1 for i, -1 for j (grad_j W = -grad_i W)
   KOKKOS_INLINE_FUNCTION void add(const PairTerms &t, const PairParticle &other, double side)
   {
     drho += other.mass * t.dv_gradw;
-    for (int a = 0; a < 3; ++a) acc[a] += side * other.mass * t.tg[a];
-    // v_ji (x) grad_i W = v_ij (x) grad_j W = -dv (x) gradw, weighted by the volume m/rho;
-    // the same for x_ji, and dx (x) gradw is symmetric (gradw is parallel to dx)
+    // v_ji (x) grad_i W = v_ij (x) grad_j W = -dv (x) gradw, weighted by the volume m/rho
     const double volume = other.mass * other.inv_rho, s = -volume;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) grad_v[a][b] += s * t.dv[a] * t.gradw[b];
+    add_force_and_weights(t, other, side);
+  }
+
+  // the same for a dummy neighbour whose velocity enters along the wall normal only
+  // (finish_walls): its shares of drho and grad_v go to the wall sums
+  KOKKOS_INLINE_FUNCTION void add_wall(const PairTerms &t, const PairParticle &other, double side)
+  {
+    const double volume = other.mass * other.inv_rho;
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) {
+        wall_drho[a][b] += other.mass * t.dv[a] * t.gradw[b];
+        wall_grad_v[a][b] -= volume * t.dv[a] * t.gradw[b];
+      }
+      wall_offset[a] += side * volume * t.w * t.dx[a];
+    }
+    add_force_and_weights(t, other, side);
+  }
+
+  // the acceleration, the shape matrix (x_ji (x) grad_i W = -dx (x) gradw, symmetric as
+  // gradw is parallel to dx) and the kernel-weighted sums
+  KOKKOS_INLINE_FUNCTION void add_force_and_weights(const PairTerms &t, const PairParticle &other,
+                                                    double side)
+  {
+    for (int a = 0; a < 3; ++a) acc[a] += side * other.mass * t.tg[a];
+    const double volume = other.mass * other.inv_rho, s = -volume;
     shape = shape +
         s * Sym3{t.dx[0] * t.gradw[0], t.dx[1] * t.gradw[1], t.dx[2] * t.gradw[2],
                  t.dx[0] * t.gradw[1], t.dx[0] * t.gradw[2], t.dx[1] * t.gradw[2]};
@@ -163,11 +199,42 @@ struct ParticleRates {
     drho += r.drho;
     for (int a = 0; a < 3; ++a) {
       acc[a] += r.acc[a];
-      for (int b = 0; b < 3; ++b) grad_v[a][b] += r.grad_v[a][b];
+      for (int b = 0; b < 3; ++b) {
+        grad_v[a][b] += r.grad_v[a][b];
+        wall_drho[a][b] += r.wall_drho[a][b];
+        wall_grad_v[a][b] += r.wall_grad_v[a][b];
+      }
+      wall_offset[a] += r.wall_offset[a];
     }
     shape = shape + r.shape;
     w_sum += r.w_sum;
     visc_w += r.visc_w;
+  }
+
+  // Adds the dummy neighbours of add_wall to drho and grad_v along the wall normal n
+  // only, grad_i W -> (n . grad_i W) n: a wall, flat on the kernel's scale, moves
+  // rigidly, so its velocity varies across it and not along it. The sums along the
+  // wall are those of the dummy lattice: a grain sliding over it sees them swing with
+  // its position against the lattice (a volumetric strain of order 1e-3 per spacing
+  // passed, against the 1e-5 a monolayer's weight holds), and hops over the floor as
+  // over a washboard once faster than a few sqrt(g dx). The normal is the direction
+  // from the dummies' volume-weighted centre to the grain (an edge or corner between
+  // walls has none: the mean of their normals).
+  KOKKOS_INLINE_FUNCTION void finish_walls()
+  {
+    const double len = sqrt(wall_offset[0] * wall_offset[0] + wall_offset[1] * wall_offset[1] +
+                            wall_offset[2] * wall_offset[2]);
+    if (len == 0.0) return;
+    const double n[3] = {wall_offset[0] / len, wall_offset[1] / len, wall_offset[2] / len};
+    for (int a = 0; a < 3; ++a) {
+      double dn = 0.0, gn = 0.0;
+      for (int b = 0; b < 3; ++b) {
+        dn += wall_drho[a][b] * n[b];
+        gn += wall_grad_v[a][b] * n[b];
+      }
+      drho += dn * n[a];
+      for (int b = 0; b < 3; ++b) grad_v[a][b] += gn * n[b];
+    }
   }
 
   // Renormalised velocity gradient grad_v shape^-1 (Randles & Libersky 1996; Bonet &

@@ -41,6 +41,7 @@ struct HostParticles {
   int granularbit, wallbit;
   GRANSPH::WendlandC2 kernel;
   GRANSPH::Viscosity visc;
+  bool wall_normal;
 
   int num_neighbours(int i) const { return numneigh[i]; }
   int neighbour(int i, int k) const { return firstneigh[i][k] & NEIGHMASK; }
@@ -55,7 +56,8 @@ struct HostParticles {
 
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
     Pair(lmp), h(0.0), visc{DEFAULT_ALPHA, DEFAULT_BETA, false, GRANSPH::Viscosity::BULK, 0.0},
-    corrected_gradient(0), wall_stress_mode(GRANSPH::WallSums::RATIO), integrator(nullptr),
+    corrected_gradient(0), wall_normal(0), wall_stress_mode(GRANSPH::WallSums::RATIO),
+    integrator(nullptr),
     nmax(0), particles(nullptr), wall_sums(nullptr), rates(nullptr)
 {
   restartinfo = 1;
@@ -86,7 +88,8 @@ void PairSPHGranular::compute(int eflag, int vflag)
   if (nall > nmax) grow(atom->nmax);
   pack_particles(0, nall);
   const HostParticles p{particles, list->firstneigh, list->numneigh, atom->mask, fix.groupbit,
-                        fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), visc};
+                        fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), visc,
+                        wall_normal != 0};
   if (fix.wallbit) {
     wall_stresses(p);
     fix.forward_comm_state();
@@ -142,6 +145,7 @@ template <class Particles> void PairSPHGranular::rates_and_forces(const Particle
     GRANSPH::ParticleRates &r = rates[i];
     for (int a = 0; a < 3; ++a) f[i][a] += particles[i].mass * r.acc[a] / force->ftm2v;
     if (!p.granular(i)) continue;
+    if (wall_normal) r.finish_walls();
     if (corrected_gradient) r.correct_gradient(dim);
     fix.state[i][FixSPHIntegrate::VISC_PRESSURE] = r.viscous_pressure();
     double *fix_rates = fix.rates[i];
@@ -187,6 +191,8 @@ void PairSPHGranular::pack_particles(int from, int to)
      visc/sound paper|bulk    its sound speed: sqrt(E/rho) (eq. 19) or sqrt(K/rho0)
      visc/walls yes|no        whether it acts between grains and dummy particles
      gradient plain|corrected the velocity gradient of eqs. 34-35, or renormalised
+     wall/gradient full|normal  dummy neighbours enter drho and grad_v fully, or
+                              along the wall normal only
      wall/stress paper|ratio  how eq. 8 adds the grains' weight to the dummies
 ------------------------------------------------------------------------- */
 
@@ -226,6 +232,8 @@ void PairSPHGranular::settings(int narg, char **arg)
       visc.walls = choice(iarg, {"no", "yes"}) == 1;
     else if (key == "gradient")
       corrected_gradient = choice(iarg, {"plain", "corrected"});
+    else if (key == "wall/gradient")
+      wall_normal = choice(iarg, {"full", "normal"});
     else if (key == "wall/stress")
       wall_stress_mode =
           choice(iarg, {"paper", "ratio"}) ? GRANSPH::WallSums::RATIO : GRANSPH::WallSums::PAPER;
@@ -309,21 +317,22 @@ void PairSPHGranular::read_restart(FILE *fp)
 void PairSPHGranular::write_restart_settings(FILE *fp)
 {
   const double values[3] = {h, visc.alpha, visc.beta};
-  const int choices[4] = {visc.sound, visc.walls, corrected_gradient, wall_stress_mode};
+  const int choices[5] = {visc.sound, visc.walls, corrected_gradient, wall_stress_mode,
+                          wall_normal};
   fwrite(values, sizeof(double), 3, fp);
-  fwrite(choices, sizeof(int), 4, fp);
+  fwrite(choices, sizeof(int), 5, fp);
 }
 
 void PairSPHGranular::read_restart_settings(FILE *fp)
 {
   double values[3];
-  int choices[4];
+  int choices[5];
   if (comm->me == 0) {
     utils::sfread(FLERR, values, sizeof(double), 3, fp, nullptr, error);
-    utils::sfread(FLERR, choices, sizeof(int), 4, fp, nullptr, error);
+    utils::sfread(FLERR, choices, sizeof(int), 5, fp, nullptr, error);
   }
   MPI_Bcast(values, 3, MPI_DOUBLE, 0, world);
-  MPI_Bcast(choices, 4, MPI_INT, 0, world);
+  MPI_Bcast(choices, 5, MPI_INT, 0, world);
   h = values[0];
   visc.alpha = values[1];
   visc.beta = values[2];
@@ -331,12 +340,13 @@ void PairSPHGranular::read_restart_settings(FILE *fp)
   visc.walls = choices[1] != 0;
   corrected_gradient = choices[2];
   wall_stress_mode = static_cast<GRANSPH::WallSums::Mode>(choices[3]);
+  wall_normal = choices[4];
 }
 
 std::vector<double> PairSPHGranular::rate_settings() const
 {
   return {h, visc.alpha, visc.beta, double(visc.sound), double(visc.walls),
-          double(corrected_gradient), double(wall_stress_mode)};
+          double(corrected_gradient), double(wall_stress_mode), double(wall_normal)};
 }
 
 void *PairSPHGranular::extract(const char *name, int &dim)

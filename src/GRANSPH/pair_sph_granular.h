@@ -45,6 +45,7 @@ class PairSPHGranular : public Pair {
   double h;                                   // smoothing length; the kernel support is 2h
   GRANSPH::Viscosity visc;                    // eq. 7
   int corrected_gradient;                     // renormalise the velocity gradient
+  int wall_normal;                            // walls enter drho, grad_v along their normal
   GRANSPH::WallSums::Mode wall_stress_mode;   // eq. 8
   FixSPHIntegrate *integrator;
 

@@ -1,7 +1,8 @@
 """The /kk styles on 2 OpenMP threads reproduce the plain styles to round-off:
 positions, velocities, density and stress after a few hundred steps of the
-column collapse (elastoplastic, dummy walls) and the jet collision (phase change),
-and what compute sph/stress/atom makes of the column's stress."""
+column collapse (elastoplastic, dummy walls; also with the walls' velocity along
+their normal only), the jet collision (phase change), and what compute
+sph/stress/atom makes of the column's stress."""
 
 import os
 import sys
@@ -14,6 +15,7 @@ import gransph_run
 EXAMPLES = os.path.join(gransph_run.TOP, "examples")
 CASES = [
     ("column_collapse", {"steps": 300}),
+    ("column_collapse", {"steps": 300, "pair_options": "wall/gradient normal"}),
     ("jet_collision", {"steps": 300, "dx": 0.016}),
 ]
 KOKKOS = ["-k", "on", "t", "2", "-sf", "kk"]
@@ -33,6 +35,7 @@ with tempfile.TemporaryDirectory() as tmp:
             ok = diff < 1e-10
             passed += ok
             failed += not ok
-            print(f"{case:16s} {name:12s} max |plain - kk| / max |plain| = {diff:.2e} {'ok' if ok else 'FAILED'}")
+            label = case + (" (" + variables["pair_options"] + ")" if "pair_options" in variables else "")
+            print(f"{label:16s} {name:12s} max |plain - kk| / max |plain| = {diff:.2e} {'ok' if ok else 'FAILED'}")
 print(f"{passed} passed, {failed} failed")
 sys.exit(1 if failed else 0)

@@ -24,7 +24,7 @@ with tempfile.TemporaryDirectory() as tmp:
         for layers in (1, 2):
             gransph_run.run(os.path.join(HERE, "in.basal_friction"),
                             {"layers": layers, "dx": dx, "v0": V0}, cwd=tmp)
-            t, v, z = np.loadtxt(os.path.join(tmp, "basal_friction.txt"), unpack=True)
+            t, v, z, _ = np.loadtxt(os.path.join(tmp, "basal_friction.txt"), unpack=True)
             window = (v < 0.85 * V0) & (v > 0.3 * V0)
             assert window.sum() > 10, "the layer did not slow down through the window"
             mu = -np.polyfit(t[window], v[window], 1)[0] / 9.81
