@@ -29,7 +29,9 @@ using namespace FixConst;
 using GRANSPH::Sym3;
 
 namespace {
-constexpr int ROW = FixSPHIntegrate::NSTATE + FixSPHIntegrate::NRATES + FixSPHIntegrate::NSTART;
+// the enums are distinct types: their sum as ints (C++20 deprecates enum arithmetic)
+constexpr int ROW = int(FixSPHIntegrate::NSTATE) + int(FixSPHIntegrate::NRATES) +
+    int(FixSPHIntegrate::NSTART);
 
 // the settings of the pair style the rates depend on (none for another style)
 std::vector<double> pair_settings(const Force *force)
@@ -227,7 +229,7 @@ void FixSPHIntegrate::restore_step()
     const double *row = &saved[(size_t) i * ROW];
     const bool grain = atom->mask[i] & groupbit;
     fresh[1] += grain;
-    if (row[NSTATE + NRATES + STEPPED] == 0.0) {
+    if (row[int(NSTATE) + int(NRATES) + int(STEPPED)] == 0.0) {
       fresh[0] += grain;
       continue;
     }
@@ -495,5 +497,5 @@ void FixSPHIntegrate::unpack_forward_comm(int n, int first, double *buf)
 
 double FixSPHIntegrate::memory_usage()
 {
-  return (double) atom->nmax * (NSTATE + NRATES + NSTART) * sizeof(double);
+  return (double) atom->nmax * ROW * sizeof(double);
 }
