@@ -324,13 +324,14 @@ TEST(CorrectedGradient, ExactNextToAWallAndIn2D)
 // A grain resting half a spacing above three layers of dummy particles at rest, offset by
 // `s` spacings along x against their lattice and moving with velocity v: its rates from
 // the dummies, entered in full (ParticleRates::add) or along the wall normal only
-// (add_wall, finish_walls).
+// (WallVelocitySums).
 ParticleRates rates_over_a_floor(double s, const double *v, bool along_normal)
 {
   const double dx = 0.01, h = 0.012, rho = 2450.0;
   const PairParticle p = particle(rho * dx * dx * dx, rho, Sym3::zero());
   const WendlandC2 kernel = WendlandC2::make(h, 3);
   ParticleRates r = ParticleRates::zero();
+  WallVelocitySums walls = WallVelocitySums::zero();
   for (int i = -4; i <= 4; ++i)
     for (int j = -4; j <= 4; ++j)
       for (int k = 0; k < 3; ++k) {
@@ -341,12 +342,13 @@ ParticleRates rates_over_a_floor(double s, const double *v, bool along_normal)
         kernel.w_and_grad_factor(rsq, w, fw);
         const double gradw[3] = {fw * dx_ij[0], fw * dx_ij[1], fw * dx_ij[2]};
         const PairTerms t = PairTerms::make(p, p, dx_ij, v, gradw, w, 0.0);
-        if (along_normal)
-          r.add_wall(t, p, 1.0);
-        else
+        if (along_normal) {
+          walls.add(t, p, 1.0);
+          r.add_force_and_weights(t, p, 1.0);
+        } else
           r.add(t, p, 1.0);
       }
-  if (along_normal) r.finish_walls();
+  if (along_normal) walls.add_along_normal(r);
   return r;
 }
 

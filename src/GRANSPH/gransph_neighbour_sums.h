@@ -8,7 +8,7 @@
      bool   granular(int i), wall(int i)
      GRANSPH::WendlandC2 kernel; GRANSPH::Viscosity visc
      bool   wall_normal  (dummy neighbours enter drho and grad_v along the wall
-                          normal only: ParticleRates::add_wall, finish_walls)
+                          normal only: WallVelocitySums)
 
    Over a full neighbour list (the Kokkos styles: no atomics) each loop runs
    over one particle i and writes only to i. Over a half list with newton off
@@ -71,6 +71,7 @@ template <class Particles>
 KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir)
 {
   ParticleRates r = ParticleRates::zero();
+  WallVelocitySums walls = WallVelocitySums::zero();
   const PairParticle pi = p.particle(i);
   const int n = p.num_neighbours(i);
   for (int k = 0; k < n; ++k) {
@@ -80,9 +81,10 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     PairGeometry g;
     if (!pair_geometry(p, pi, pj, p.granular(j) || p.visc.walls, g)) continue;
     const PairTerms t = g.terms(pi, pj);
-    if (p.wall_normal && p.wall(j))
-      r.add_wall(t, pj, 1.0);
-    else
+    if (p.wall_normal && p.wall(j)) {
+      walls.add(t, pj, 1.0);
+      r.add_force_and_weights(t, pj, 1.0);
+    } else
       r.add(t, pj, 1.0);
     if (vir) {
       const double mm = pi.mass * pj.mass;
@@ -90,6 +92,7 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
       add_pair_virial(vir, g.dx, fij);
     }
   }
+  if (p.wall_normal) walls.add_along_normal(r);
   return r;
 }
 
@@ -162,16 +165,18 @@ KOKKOS_INLINE_FUNCTION void add_wall_sums(const Particles &p, int i, int nlocal,
 
 // Half list: the pairs of particle i added to the rates (ParticleRates, indexed by
 // atom) of i and its owned neighbours: eqs. 6, 7, 34, 35 for granular particles, the
-// acceleration of eq. 9 for dummy ones. tally(i, j, f_ij, x_ij) gets each pair's force
-// on i if want_virial.
-template <class Particles, class RatesArray, class Tally>
+// acceleration of eq. 9 for dummy ones. With p.wall_normal a grain's dummy neighbours
+// go to walls (WallVelocitySums, indexed by atom) instead of its drho and grad_v.
+// tally(i, j, f_ij, x_ij) gets each pair's force on i if want_virial.
+template <class Particles, class RatesArray, class WallsArray, class Tally>
 KOKKOS_INLINE_FUNCTION void add_pair_rates(const Particles &p, int i, int nlocal,
-                                           const RatesArray &rates, bool want_virial,
-                                           const Tally &tally)
+                                           const RatesArray &rates, const WallsArray &walls,
+                                           bool want_virial, const Tally &tally)
 {
   const bool i_granular = p.granular(i);
   if (!i_granular && !p.wall(i)) return;
   ParticleRates ri = ParticleRates::zero();
+  WallVelocitySums wi = WallVelocitySums::zero();
   const PairParticle pi = p.particle(i);
   const int n = p.num_neighbours(i);
   for (int k = 0; k < n; ++k) {
@@ -181,15 +186,16 @@ KOKKOS_INLINE_FUNCTION void add_pair_rates(const Particles &p, int i, int nlocal
     PairGeometry g;
     if (!pair_geometry(p, pi, pj, (i_granular && p.granular(j)) || p.visc.walls, g)) continue;
     const PairTerms t = g.terms(pi, pj);
-    // a grain's dummy neighbour enters along the wall normal only, if so set
-    if (p.wall_normal && p.wall(j))
-      ri.add_wall(t, pj, 1.0);
-    else
+    if (p.wall_normal && p.wall(j)) {
+      wi.add(t, pj, 1.0);
+      ri.add_force_and_weights(t, pj, 1.0);
+    } else
       ri.add(t, pj, 1.0);
     if (j < nlocal) {
-      if (p.wall_normal && !i_granular)
-        rates[j].add_wall(t, pi, -1.0);
-      else
+      if (p.wall_normal && !i_granular) {    // i is j's dummy neighbour
+        walls[j].add(t, pi, -1.0);
+        rates[j].add_force_and_weights(t, pi, -1.0);
+      } else
         rates[j].add(t, pi, -1.0);
     }
     if (want_virial) {
@@ -199,6 +205,7 @@ KOKKOS_INLINE_FUNCTION void add_pair_rates(const Particles &p, int i, int nlocal
     }
   }
   rates[i].add(ri);
+  if (p.wall_normal) walls[i].add(wi);
 }
 
 }    // namespace GRANSPH

@@ -130,12 +130,6 @@ struct ParticleRates {
   Sym3 shape;             // sum_j m_j/rho_j x_ji (x) grad_i W_ij: I inside the material
   double w_sum;           // sum_j m_j/rho_j W_ij
   double visc_w;          // sum_j m_j/rho_j W_ij rho_i rho_j Pi_ij / 2
-  // The dummy neighbours' share of drho and grad_v, kept apart (add_wall) to be taken
-  // along the wall normal only (finish_walls): sum_d m_d v_id (x) grad_i W_id, the
-  // grad_v sum, and sum_d m_d/rho_d x_id W_id, whose direction is the wall normal.
-  double wall_drho[3][3];
-  double wall_grad_v[3][3];
-  double wall_offset[3];
 
   // Below this determinant of `shape` (the full-support value is 1; a flat free
   // surface has about 0.5) a particle has too few neighbours for the correction.
@@ -143,15 +137,8 @@ struct ParticleRates {
 
   KOKKOS_INLINE_FUNCTION static ParticleRates zero()
   {
-    return {0.0,
-            {0.0, 0.0, 0.0},
-            {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
-            Sym3::zero(),
-            0.0,
-            0.0,
-            {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
-            {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
-            {0.0, 0.0, 0.0}};
+    return {0.0, {0.0, 0.0, 0.0}, {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
+            Sym3::zero(), 0.0, 0.0};
   }
 
   // the terms of a pair with `other`: side +1 for i, -1 for j (grad_j W = -grad_i W)
@@ -162,21 +149,6 @@ struct ParticleRates {
     const double volume = other.mass * other.inv_rho, s = -volume;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) grad_v[a][b] += s * t.dv[a] * t.gradw[b];
-    add_force_and_weights(t, other, side);
-  }
-
-  // the same for a dummy neighbour whose velocity enters along the wall normal only
-  // (finish_walls): its shares of drho and grad_v go to the wall sums
-  KOKKOS_INLINE_FUNCTION void add_wall(const PairTerms &t, const PairParticle &other, double side)
-  {
-    const double volume = other.mass * other.inv_rho;
-    for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < 3; ++b) {
-        wall_drho[a][b] += other.mass * t.dv[a] * t.gradw[b];
-        wall_grad_v[a][b] -= volume * t.dv[a] * t.gradw[b];
-      }
-      wall_offset[a] += side * volume * t.w * t.dx[a];
-    }
     add_force_and_weights(t, other, side);
   }
 
@@ -199,42 +171,11 @@ struct ParticleRates {
     drho += r.drho;
     for (int a = 0; a < 3; ++a) {
       acc[a] += r.acc[a];
-      for (int b = 0; b < 3; ++b) {
-        grad_v[a][b] += r.grad_v[a][b];
-        wall_drho[a][b] += r.wall_drho[a][b];
-        wall_grad_v[a][b] += r.wall_grad_v[a][b];
-      }
-      wall_offset[a] += r.wall_offset[a];
+      for (int b = 0; b < 3; ++b) grad_v[a][b] += r.grad_v[a][b];
     }
     shape = shape + r.shape;
     w_sum += r.w_sum;
     visc_w += r.visc_w;
-  }
-
-  // Adds the dummy neighbours of add_wall to drho and grad_v along the wall normal n
-  // only, grad_i W -> (n . grad_i W) n: a wall, flat on the kernel's scale, moves
-  // rigidly, so its velocity varies across it and not along it. The sums along the
-  // wall are those of the dummy lattice: a grain sliding over it sees them swing with
-  // its position against the lattice (a volumetric strain of order 1e-3 per spacing
-  // passed, against the 1e-5 a monolayer's weight holds), and hops over the floor as
-  // over a washboard once faster than a few sqrt(g dx). The normal is the direction
-  // from the dummies' volume-weighted centre to the grain (an edge or corner between
-  // walls has none: the mean of their normals).
-  KOKKOS_INLINE_FUNCTION void finish_walls()
-  {
-    const double len = sqrt(wall_offset[0] * wall_offset[0] + wall_offset[1] * wall_offset[1] +
-                            wall_offset[2] * wall_offset[2]);
-    if (len == 0.0) return;
-    const double n[3] = {wall_offset[0] / len, wall_offset[1] / len, wall_offset[2] / len};
-    for (int a = 0; a < 3; ++a) {
-      double dn = 0.0, gn = 0.0;
-      for (int b = 0; b < 3; ++b) {
-        dn += wall_drho[a][b] * n[b];
-        gn += wall_grad_v[a][b] * n[b];
-      }
-      drho += dn * n[a];
-      for (int b = 0; b < 3; ++b) grad_v[a][b] += gn * n[b];
-    }
   }
 
   // Renormalised velocity gradient grad_v shape^-1 (Randles & Libersky 1996; Bonet &
@@ -275,6 +216,69 @@ struct ParticleRates {
   {
     const double(&l)[3][3] = grad_v;
     return {0.5 * (l[0][1] - l[1][0]), 0.5 * (l[0][2] - l[2][0]), 0.5 * (l[1][2] - l[2][1])};
+  }
+};
+
+// A grain's dummy neighbours' share of its density rate and velocity gradient, to be
+// taken along the wall normal only (pair_style keyword wall/gradient normal):
+// grad_i W -> (n . grad_i W) n. A wall, flat on the kernel's scale, moves rigidly, so
+// its velocity varies across it and not along it. The sums along the wall are those of
+// the dummy lattice: a grain sliding over it sees them swing with its position against
+// the lattice (a volumetric strain of order 1e-3 per spacing passed, against the 1e-5
+// a monolayer's weight holds), and hops over the floor as over a washboard once faster
+// than a few sqrt(g dx). The normal is the direction from the dummies' volume-weighted
+// centre to the grain (where walls meet, the mean of their normals).
+struct WallVelocitySums {
+  double drho[3][3];      // sum_d m_d v_id (x) grad_i W_id
+  double grad_v[3][3];    // sum_d m_d/rho_d v_di (x) grad_i W_id
+  double offset[3];       // sum_d m_d/rho_d x_id W_id, along the wall normal
+
+  KOKKOS_INLINE_FUNCTION static WallVelocitySums zero()
+  {
+    return {{{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
+            {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
+            {0.0, 0.0, 0.0}};
+  }
+
+  // the pair with dummy particle `dummy`, as ParticleRates::add: side +1 for i, -1 for j
+  KOKKOS_INLINE_FUNCTION void add(const PairTerms &t, const PairParticle &dummy, double side)
+  {
+    const double volume = dummy.mass * dummy.inv_rho;
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) {
+        drho[a][b] += dummy.mass * t.dv[a] * t.gradw[b];
+        grad_v[a][b] -= volume * t.dv[a] * t.gradw[b];
+      }
+      offset[a] += side * volume * t.w * t.dx[a];
+    }
+  }
+
+  KOKKOS_INLINE_FUNCTION void add(const WallVelocitySums &w)
+  {
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) {
+        drho[a][b] += w.drho[a][b];
+        grad_v[a][b] += w.grad_v[a][b];
+      }
+      offset[a] += w.offset[a];
+    }
+  }
+
+  // adds the sums along the normal to the grain's rates
+  KOKKOS_INLINE_FUNCTION void add_along_normal(ParticleRates &r) const
+  {
+    const double len = sqrt(offset[0] * offset[0] + offset[1] * offset[1] + offset[2] * offset[2]);
+    if (len == 0.0) return;
+    const double n[3] = {offset[0] / len, offset[1] / len, offset[2] / len};
+    for (int a = 0; a < 3; ++a) {
+      double dn = 0.0, gn = 0.0;
+      for (int b = 0; b < 3; ++b) {
+        dn += drho[a][b] * n[b];
+        gn += grad_v[a][b] * n[b];
+      }
+      r.drho += dn * n[a];
+      for (int b = 0; b < 3; ++b) r.grad_v[a][b] += gn * n[b];
+    }
   }
 };
 

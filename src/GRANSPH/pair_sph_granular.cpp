@@ -58,7 +58,7 @@ PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
     Pair(lmp), h(0.0), visc{DEFAULT_ALPHA, DEFAULT_BETA, false, GRANSPH::Viscosity::BULK, 0.0},
     corrected_gradient(0), wall_normal(0), wall_stress_mode(GRANSPH::WallSums::RATIO),
     integrator(nullptr),
-    nmax(0), particles(nullptr), wall_sums(nullptr), rates(nullptr)
+    nmax(0), particles(nullptr), wall_sums(nullptr), rates(nullptr), wall_velocity(nullptr)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -70,6 +70,7 @@ PairSPHGranular::~PairSPHGranular()
   memory->sfree(particles);
   memory->sfree(wall_sums);
   memory->sfree(rates);
+  memory->sfree(wall_velocity);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -132,11 +133,13 @@ template <class Particles> void PairSPHGranular::rates_and_forces(const Particle
   const int nlocal = atom->nlocal, inum = list->inum;
   const int *ilist = list->ilist;
   for (int i = 0; i < nlocal; ++i) rates[i] = GRANSPH::ParticleRates::zero();
+  if (wall_normal)
+    for (int i = 0; i < nlocal; ++i) wall_velocity[i] = GRANSPH::WallVelocitySums::zero();
   auto tally = [&](int i, int j, const double *fij, const double *dx) {
     ev_tally_xyz(i, j, nlocal, 0, 0.0, 0.0, fij[0], fij[1], fij[2], dx[0], dx[1], dx[2]);
   };
   for (int ii = 0; ii < inum; ++ii)
-    GRANSPH::add_pair_rates(p, ilist[ii], nlocal, rates, vflag_either, tally);
+    GRANSPH::add_pair_rates(p, ilist[ii], nlocal, rates, wall_velocity, vflag_either, tally);
 
   double **f = atom->f;
   const int dim = domain->dimension;
@@ -145,7 +148,7 @@ template <class Particles> void PairSPHGranular::rates_and_forces(const Particle
     GRANSPH::ParticleRates &r = rates[i];
     for (int a = 0; a < 3; ++a) f[i][a] += particles[i].mass * r.acc[a] / force->ftm2v;
     if (!p.granular(i)) continue;
-    if (wall_normal) r.finish_walls();
+    if (wall_normal) wall_velocity[i].add_along_normal(r);
     if (corrected_gradient) r.correct_gradient(dim);
     fix.state[i][FixSPHIntegrate::VISC_PRESSURE] = r.viscous_pressure();
     double *fix_rates = fix.rates[i];
@@ -161,11 +164,14 @@ void PairSPHGranular::grow(int n)
   memory->sfree(particles);
   memory->sfree(wall_sums);
   memory->sfree(rates);
+  memory->sfree(wall_velocity);
   particles = (PairParticle *) memory->smalloc(sizeof(PairParticle) * nmax, "pair:particles");
   wall_sums =
       (GRANSPH::WallSums *) memory->smalloc(sizeof(GRANSPH::WallSums) * nmax, "pair:wall_sums");
   rates = (GRANSPH::ParticleRates *) memory->smalloc(sizeof(GRANSPH::ParticleRates) * nmax,
                                                      "pair:rates");
+  wall_velocity = (GRANSPH::WallVelocitySums *) memory->smalloc(
+      sizeof(GRANSPH::WallVelocitySums) * nmax, "pair:wall_velocity");
 }
 
 // the pair data of the granular and dummy particles among atoms [from, to)

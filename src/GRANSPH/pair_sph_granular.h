@@ -60,6 +60,7 @@ class PairSPHGranular : public Pair {
   GRANSPH::PairParticle *particles;    // what the pairs read
   GRANSPH::WallSums *wall_sums;        // of eq. 8, for the dummy particles
   GRANSPH::ParticleRates *rates;       // summed over the pairs
+  GRANSPH::WallVelocitySums *wall_velocity;    // the same, of wall/gradient normal
 
   void grow(int n);
   void pack_particles(int from, int to);

@@ -207,8 +207,7 @@ void PairSPHGranularKokkos<DeviceType>::grains(const DeviceParticles<DeviceType>
   auto vatom = k_vatom.template view<DeviceType>();
   const int want_virial = vflag_either, want_vatom = vflag_atom;
   const double ftm2v = force->ftm2v;
-  const int corrected = corrected_gradient, walls_normal = wall_normal,
-            dim = domain->dimension;
+  const int corrected = corrected_gradient, dim = domain->dimension;
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
       ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
@@ -217,7 +216,6 @@ void PairSPHGranularKokkos<DeviceType>::grains(const DeviceParticles<DeviceType>
         if (!p.granular(i)) return;
         double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
         GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, want_virial ? vir : nullptr);
-        if (walls_normal) r.finish_walls();
         if (corrected) r.correct_gradient(dim);
         state(i, FSI::VISC_PRESSURE) = r.viscous_pressure();
         const double m = p.particle(i).mass;
