@@ -29,7 +29,8 @@ using namespace FixConst;
 ------------------------------------------------------------------------- */
 
 FixSPHOutflow::FixSPHOutflow(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), idregion(nullptr), region(nullptr), every(0), nremoved(0), mass_removed(0.0)
+    Fix(lmp, narg, arg), idregion(nullptr), region(nullptr), every(0), nremoved(0), mass_removed(0.0),
+    warned_region_leaves_box(false)
 {
   if (narg < 4) error->all(FLERR, "Illegal fix sph/outflow command: need a region ID");
   region = GRANSPHCompat::find_region(domain, arg[3]);
@@ -143,9 +144,9 @@ void FixSPHOutflow::remove_outside()
    box while still inside the region, and is lost at the next exchange
 ------------------------------------------------------------------------- */
 
-void FixSPHOutflow::warn_if_region_leaves_box() const
+void FixSPHOutflow::warn_if_region_leaves_box()
 {
-  if (comm->me != 0 || !region->bboxflag || domain->triclinic) return;
+  if (warned_region_leaves_box || comm->me != 0 || !region->bboxflag || domain->triclinic) return;
   const double lo[3] = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
   const double hi[3] = {region->extent_xhi, region->extent_yhi, region->extent_zhi};
   for (int d = 0; d < domain->dimension; ++d)
@@ -155,6 +156,7 @@ void FixSPHOutflow::warn_if_region_leaves_box() const
                      "Fix sph/outflow: region {} extends beyond a fixed boundary of the box; "
                      "atoms leaving the box there are lost",
                      idregion);
+      warned_region_leaves_box = true;
       return;
     }
 }

@@ -35,7 +35,8 @@ class FixSPHOutflow : public Fix {
   double mass_removed;    // their mass
 
   void remove_outside();
-  void warn_if_region_leaves_box() const;
+  bool warned_region_leaves_box;    // once per fix, not at every run
+  void warn_if_region_leaves_box();
 };
 
 }    // namespace LAMMPS_NS
