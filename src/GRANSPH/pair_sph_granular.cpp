@@ -86,7 +86,8 @@ void PairSPHGranular::compute(int eflag, int vflag)
   FixSPHIntegrate &fix = *integrator;
   const int nall = atom->nlocal + atom->nghost;
   fix.forward_comm_state();
-  if (nall > nmax) grow(atom->nmax);
+  // wall/gradient normal may be set by a pair_style issued again after the arrays grew
+  if (nall > nmax || (wall_normal && !wall_velocity)) grow(atom->nmax);
   pack_particles(0, nall);
   const HostParticles p{particles, list->firstneigh, list->numneigh, atom->mask, fix.groupbit,
                         fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), visc,
@@ -170,8 +171,9 @@ void PairSPHGranular::grow(int n)
       (GRANSPH::WallSums *) memory->smalloc(sizeof(GRANSPH::WallSums) * nmax, "pair:wall_sums");
   rates = (GRANSPH::ParticleRates *) memory->smalloc(sizeof(GRANSPH::ParticleRates) * nmax,
                                                      "pair:rates");
-  wall_velocity = (GRANSPH::WallVelocitySums *) memory->smalloc(
-      sizeof(GRANSPH::WallVelocitySums) * nmax, "pair:wall_velocity");
+  wall_velocity = wall_normal ? (GRANSPH::WallVelocitySums *) memory->smalloc(
+                                    sizeof(GRANSPH::WallVelocitySums) * nmax, "pair:wall_velocity")
+                              : nullptr;
 }
 
 // the pair data of the granular and dummy particles among atoms [from, to)

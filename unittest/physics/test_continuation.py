@@ -63,6 +63,9 @@ with tempfile.TemporaryDirectory() as tmp:
     INVALIDATE = [
         ("a new pair style setting", "pair_style sph/granular 0.0125",
          "the pair style settings changed since the last step: " + FRESH),
+        # the plain style's arrays of this option exist only once it is set
+        ("wall/gradient normal set", "pair_style sph/granular 0.012 wall/gradient normal",
+         "the pair style settings changed since the last step: " + FRESH),
         ("a new timestep", "timestep 1e-5", "the timestep changed since the last step: " + FRESH),
         ("a new grain", "include new_grain.in",
          "1 of 193 grains are new since the last step: their " + FRESH[4:]),
