@@ -66,6 +66,27 @@ KOKKOS_INLINE_FUNCTION bool pair_geometry(const Particles &p, const PairParticle
   return true;
 }
 
+// Whether a neighbour that interacts with particle i (a grain, or a dummy next to grain
+// i) lies on top of it, closer than a millionth of h: two create_atoms commands filled
+// one lattice site. Such a pair has no kernel gradient, so nothing keeps the two apart.
+template <class Particles> KOKKOS_INLINE_FUNCTION bool has_coincident_neighbour(const Particles &p, int i)
+{
+  const bool i_granular = p.granular(i);
+  if (!i_granular && !p.wall(i)) return false;
+  const double tiny = 1e-12 * p.kernel.h * p.kernel.h;
+  const PairParticle &pi = p.particle(i);
+  const int n = p.num_neighbours(i);
+  for (int k = 0; k < n; ++k) {
+    const int j = p.neighbour(i, k);
+    if (!p.granular(j) && !(i_granular && p.wall(j))) continue;
+    const PairParticle &pj = p.particle(j);
+    double rsq = 0.0;
+    for (int a = 0; a < 3; ++a) rsq += (pi.x[a] - pj.x[a]) * (pi.x[a] - pj.x[a]);
+    if (rsq < tiny) return true;
+  }
+  return false;
+}
+
 // Rates of granular particle i (eqs. 6, 7, 34, 35); vir (may be null) gets its virial.
 template <class Particles>
 KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir)

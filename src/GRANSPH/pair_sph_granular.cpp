@@ -92,12 +92,52 @@ void PairSPHGranular::compute(int eflag, int vflag)
   const HostParticles p{particles, list->firstneigh, list->numneigh, atom->mask, fix.groupbit,
                         fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), visc,
                         wall_normal != 0};
+  if (update->setupflag) check_no_coincident(p);
   if (fix.wallbit) {
     wall_stresses(p);
     fix.forward_comm_state();
     pack_particles(atom->nlocal, nall);
   }
   rates_and_forces(p);
+}
+
+// at the setup of a run: no two interacting particles on one place
+template <class Particles> void PairSPHGranular::check_no_coincident(const Particles &p)
+{
+  int found = -1;
+  for (int ii = 0; ii < list->inum && found < 0; ++ii)
+    if (GRANSPH::has_coincident_neighbour(p, list->ilist[ii])) found = list->ilist[ii];
+  stop_if_coincident(found);
+}
+
+// Collective: if any rank found an owned particle (index i >= 0) with a neighbour on top
+// of it, every rank stops with both IDs and the place, from the lowest such rank.
+void PairSPHGranular::stop_if_coincident(int i)
+{
+  const int nprocs = comm->nprocs;
+  int mine = i >= 0 ? comm->me : nprocs, root = nprocs;
+  MPI_Allreduce(&mine, &root, 1, MPI_INT, MPI_MIN, world);
+  if (root == nprocs) return;
+  double what[5] = {0.0, 0.0, 0.0, 0.0, 0.0};    // the two IDs and the place
+  if (comm->me == root) {
+    double **x = atom->x;
+    const int nall = atom->nlocal + atom->nghost;
+    auto distsq = [&](int j) {
+      double rsq = 0.0;
+      for (int a = 0; a < 3; ++a) rsq += (x[i][a] - x[j][a]) * (x[i][a] - x[j][a]);
+      return rsq;
+    };
+    int j = 0;
+    while (j < nall && (j == i || distsq(j) >= 1e-12 * h * h)) ++j;
+    what[0] = atom->tag[i];
+    what[1] = j < nall ? atom->tag[j] : 0;
+    for (int a = 0; a < 3; ++a) what[2 + a] = x[i][a];
+  }
+  MPI_Bcast(what, 5, MPI_DOUBLE, root, world);
+  error->all(FLERR,
+             "Pair style sph/granular: atoms {} and {} are both at ({}, {}, {}); did two "
+             "create_atoms commands fill one lattice site?",
+             (tagint) what[0], (tagint) what[1], what[2], what[3], what[4]);
 }
 
 // dummy-particle stresses, eq. 8, with the wall acceleration from the velocity

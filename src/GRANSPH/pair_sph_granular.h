@@ -53,6 +53,7 @@ class PairSPHGranular : public Pair {
   static constexpr double DEFAULT_ALPHA = 0.25, DEFAULT_BETA = 0.0;
 
   void allocate();
+  void stop_if_coincident(int i);
 
  private:
   // per atom, owned and ghost
@@ -64,6 +65,7 @@ class PairSPHGranular : public Pair {
 
   void grow(int n);
   void pack_particles(int from, int to);
+  template <class Particles> void check_no_coincident(const Particles &p);
   template <class Particles> void wall_stresses(const Particles &p);
   template <class Particles> void rates_and_forces(const Particles &p);
 };

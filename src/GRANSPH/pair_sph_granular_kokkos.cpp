@@ -101,6 +101,19 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   p.visc = visc;
   p.wall_normal = wall_normal != 0;
 
+  if (update->setupflag) {    // no two interacting particles on one place
+    auto ilist = k_list->d_ilist;
+    int found = -1;
+    Kokkos::parallel_reduce(
+        Kokkos::RangePolicy<DeviceType>(0, list->inum),
+        LAMMPS_LAMBDA(const int ii, int &last) {
+          const int i = ilist(ii);
+          if (i > last && GRANSPH::has_coincident_neighbour(p, i)) last = i;
+        },
+        Kokkos::Max<int>(found));
+    if (found >= 0) atomKK->sync(Host, X_MASK | TAG_MASK);
+    stop_if_coincident(found);
+  }
   if (fix.wallbit) {
     walls(p, kk);
     kk.k_state.template modify<DeviceType>();

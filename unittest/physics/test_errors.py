@@ -86,6 +86,11 @@ BAD_STATE = r"atom \d+ has a non-finite state or non-positive density"
 CASES.append(("a blow-up is caught with the atom ID", BLOW_UP, BAD_STATE))
 KOKKOS = ["-k", "on", "t", "1", "-sf", "kk"]
 
+# a grain created on a dummy particle's lattice site: no kernel gradient keeps them apart
+ON_A_DUMMY = dict(run="create_atoms 1 single 0.025 0.025 -0.005 units box\ngroup sand type 1\nrun 10")
+COINCIDENT = r"atoms \d+ and \d+ are both at \(0\.025\d*, 0\.025\d*, -0\.005\d*\); did two create_atoms"
+CASES.append(("a grain on a dummy particle", ON_A_DUMMY, COINCIDENT))
+
 # a bad initial state stops the run at setup, before the step-0 thermo output
 BAD_START = BAD_STATE + r" \(rho 2450, v {} 0 0\) at step 0"
 NAN_START = dict(run="variable vx atom exp(1000)-exp(1000)\nvelocity sand set v_vx 0 0 units box\nrun 10")
@@ -155,6 +160,9 @@ with tempfile.TemporaryDirectory() as tmp:
     code, error = run_case(tmp, BLOW_UP, KOKKOS)
     check("the /kk integrator catches a blow-up too", code != 0 and re.search(BAD_STATE, error),
           error or "no error")
+    code, error = run_case(tmp, ON_A_DUMMY, KOKKOS)
+    check("the /kk pair style finds a grain on a dummy particle too",
+          code != 0 and re.search(COINCIDENT, error), error or "no error")
     code, error = run_case(tmp, NAN_START, KOKKOS)
     check("the /kk integrator catches a NaN initial velocity at setup",
           code != 0 and re.search(BAD_START.format("-?nan"), error), error or "no error")
