@@ -66,14 +66,21 @@ KOKKOS_INLINE_FUNCTION bool pair_geometry(const Particles &p, const PairParticle
   return true;
 }
 
+// Two particles closer than a millionth of h lie on one place: two create_atoms commands
+// filled one lattice site. Such a pair has no kernel gradient, so nothing keeps them apart.
+KOKKOS_INLINE_FUNCTION double coincident_rsq(double h)
+{
+  return 1e-12 * h * h;
+}
+
 // Whether a neighbour that interacts with particle i (a grain, or a dummy next to grain
-// i) lies on top of it, closer than a millionth of h: two create_atoms commands filled
-// one lattice site. Such a pair has no kernel gradient, so nothing keeps the two apart.
-template <class Particles> KOKKOS_INLINE_FUNCTION bool has_coincident_neighbour(const Particles &p, int i)
+// i) lies on top of it.
+template <class Particles>
+KOKKOS_INLINE_FUNCTION bool has_coincident_neighbour(const Particles &p, int i)
 {
   const bool i_granular = p.granular(i);
   if (!i_granular && !p.wall(i)) return false;
-  const double tiny = 1e-12 * p.kernel.h * p.kernel.h;
+  const double tiny = coincident_rsq(p.kernel.h);
   const PairParticle &pi = p.particle(i);
   const int n = p.num_neighbours(i);
   for (int k = 0; k < n; ++k) {

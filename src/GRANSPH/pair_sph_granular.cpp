@@ -128,7 +128,7 @@ void PairSPHGranular::stop_if_coincident(int i)
       return rsq;
     };
     int j = 0;
-    while (j < nall && (j == i || distsq(j) >= 1e-12 * h * h)) ++j;
+    while (j < nall && (j == i || distsq(j) >= GRANSPH::coincident_rsq(h))) ++j;
     what[0] = atom->tag[i];
     what[1] = j < nall ? atom->tag[j] : 0;
     for (int a = 0; a < 3; ++a) what[2 + a] = x[i][a];
