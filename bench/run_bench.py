@@ -1,13 +1,30 @@
 #!/usr/bin/python3
-"""GRANSPH throughput on this machine: particle-steps per second of the column
-collapse (examples/column_collapse) at three sizes, for the plain styles on 1
-and 2 MPI ranks, the /kk styles on 2 OpenMP threads, and LAMMPS' own
-sph/taitwater + fix sph on the same particles (in.taitwater_peer).
+"""GRANSPH throughput on this machine: particle-steps and grain-steps per second of
+the examples' inputs, for the plain styles on 1 and 2 MPI ranks and the /kk styles
+on 2 OpenMP threads, beside LAMMPS' own SPH fluid on the column's particles and,
+with --against, beside the plugin of an earlier commit.
 
-  bench/run_bench.py [--size {2e4,1e5,4e5}]... [--repeat N]
+  bench/run_bench.py [--case column|flume|jet]... [--size S]... [--repeat N]
+                     [--against REF [--against-arch as-built|native|generic]]
 
---size: only these sizes (default all three). --repeat N: the best of N runs
-of each (default 3; a shared machine's noise only ever slows a run down).
+Cases (the examples' own inputs, for a fixed number of steps):
+  column  examples/column_collapse, a = 0.5 (a sand column on three layers of dummy
+          floor), at about 2e4, 1e5 and 4e5 particles; beside it sph/taitwater +
+          fix sph on the same particles and the same pair set (in.taitwater_peer)
+  flume   examples/flume_impact, elastoplastic, dx = 10 mm as in the paper (dummy-heavy:
+          about 5 dummy particles per grain)
+  jet     examples/jet_collision (grains only, free surfaces everywhere)
+--size: only these sizes (of the column: 2e4, 1e5, 4e5; the flume, at the paper's
+spacing, 1.2e5; the jet 1.1e5).
+--repeat N: the best of N runs of each (default 3; a shared machine's noise only
+ever slows a run down). Every run of one size goes round in turn, so that a slow
+phase of the machine falls on all of them.
+--against REF: builds the plugin of git commit REF into bench/against/SHA/ (against
+the same LAMMPS) and runs it, on REF's own example inputs, beside the current one:
+the ratio is what a user gains over REF, in one run of this script.
+--against-arch: REF's plugin as its own CMakeLists builds it (as-built, default), or
+for this machine (native) or any x86-64 (generic), to tell a code change's gain from
+the instruction set's: e.g. --against HEAD --against-arch generic.
 """
 
 import argparse
@@ -19,67 +36,148 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.dirname(HERE)
 LMP = os.path.join(TOP, "tools", "lmp")
-COLLAPSE = os.path.join(TOP, "examples", "column_collapse", "in.column_collapse")
 PEER = os.path.join(HERE, "in.taitwater_peer")
+INPUTS = {"column": "examples/column_collapse/in.column_collapse",
+          "flume": "examples/flume_impact/in.flume_impact",
+          "jet": "examples/jet_collision/in.jet_collision"}
 
-# about 2e4, 1e5, 4e5 particles (sand column plus its floor): spacing, steps
-SIZES = {"2e4": (0.0137, 200), "1e5": (0.0067, 60), "4e5": (0.0038, 20)}
-RUNS = [
-    ("plain, 1 rank", COLLAPSE, 1, []),
-    ("plain, 2 ranks", COLLAPSE, 2, []),
-    ("kk, 2 threads", COLLAPSE, 1, ["-k", "on", "t", "2", "-sf", "kk"]),
-    ("taitwater, 1 rank", PEER, 1, []),
-    ("taitwater, 2 ranks", PEER, 2, []),
-]
-RATIOS = [("plain(1)/tw(1)", 0, 3), ("kk/tw(1)", 2, 3), ("kk/tw(2)", 2, 4)]
+# case -> size label -> (variables, steps); about 2e4, 1e5, 4e5 particles of the column
+SIZES = {
+    "column": {"2e4": ({"dx": 0.0137}, 200), "1e5": ({"dx": 0.0067}, 60),
+               "4e5": ({"dx": 0.0038}, 20)},
+    "flume": {"1.2e5": ({"dx": 0.01, "model": "elastoplastic"}, 40)},    # the paper's dx
+    "jet": {"1.1e5": ({"dx": 0.006}, 40)},
+}
+KK = ["-k", "on", "t", "2", "-sf", "kk"]
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMP_PROC_BIND="spread", OMP_PLACES="threads")
 LOOP = re.compile(r"Loop time of (\S+) on \d+ procs for (\d+) steps with (\d+) atoms")
-CREATED = re.compile(r"Created (\d+) atoms")
+GRAINS = re.compile(r"^\s*(\d+) atoms in group sand\s*$", re.M)    # the jet: all are grains
 
 
-def run_once(script, ranks, args, dx, steps):
-    """(atoms, grains, particle-steps per second) of one run"""
-    cmd = [LMP, "-in", script, "-var", "dx", str(dx), "-var", "steps", str(steps),
-           "-log", "none", "-echo", "none"] + args
-    if ranks > 1:
-        cmd = ["mpirun", "-np", str(ranks), "--bind-to", "core"] + cmd
-    out = subprocess.run(cmd, capture_output=True, text=True, env=ENV, cwd=HERE).stdout
-    loops = LOOP.findall(out)
-    if not loops:
-        sys.exit(f"no timing from: {' '.join(cmd)}\n{out[-2000:]}")
-    seconds, nsteps, natoms = loops[-1]
-    grains = int(CREATED.findall(out)[0])    # the column is created first
-    return int(natoms), grains, int(nsteps) * int(natoms) / float(seconds)
+class Run:
+    """one configuration: a LAMMPS input, ranks, command-line flags and plugin build"""
+
+    def __init__(self, name, script, ranks, flags=(), build=None):
+        self.name, self.script, self.ranks = name, script, ranks
+        self.flags, self.build = list(flags), build
+
+    def once(self, variables, steps):
+        """(atoms, grains, particle-steps per second) of one run"""
+        cmd = [LMP, "-in", self.script, "-var", "steps", str(steps), "-log", "none",
+               "-echo", "none"] + self.flags
+        for name, value in variables.items():
+            cmd += ["-var", name, str(value)]
+        if self.ranks > 1:
+            cmd = ["mpirun", "-np", str(self.ranks), "--bind-to", "core"] + cmd
+        env = dict(ENV, **({"GRANSPH_BUILD": self.build} if self.build else {}))
+        out = subprocess.run(cmd, capture_output=True, text=True, env=env,
+                             cwd=os.path.dirname(self.script)).stdout
+        loops = LOOP.findall(out)
+        if not loops:
+            sys.exit(f"no timing from: {' '.join(cmd)}\n{out[-2000:]}")
+        seconds, nsteps, natoms = loops[-1]
+        grains = GRAINS.findall(out) or [natoms]
+        return int(natoms), int(grains[0]), int(nsteps) * int(natoms) / float(seconds)
 
 
-def throughputs(dx, steps, repeat):
-    """(atoms, grains, best rate) of every run in RUNS; the repeats go round all runs
-    in turn, so that a slow phase of the machine does not fall on one run only"""
-    rounds = [[run_once(script, ranks, args, dx, steps) for _, script, ranks, args in RUNS]
-              for _ in range(repeat)]
-    return [(runs[0][0], runs[0][1], max(rate for *_, rate in runs)) for runs in zip(*rounds)]
+def build_against(ref, arch):
+    """the plugin of commit REF, built into bench/against/SHA[-native]/; its folder"""
+    sha = subprocess.run(["git", "-C", TOP, "rev-parse", "--verify", ref + "^{commit}"],
+                         capture_output=True, text=True, check=True).stdout.strip()
+    where = os.path.join(HERE, "against", sha[:12] + ("" if arch == "as-built" else "-" + arch))
+    src, build = os.path.join(where, "src"), os.path.join(where, "build")
+    if not os.path.isdir(src):
+        os.makedirs(src)
+        archive = subprocess.Popen(["git", "-C", TOP, "archive", sha], stdout=subprocess.PIPE)
+        subprocess.run(["tar", "-x", "-C", src], stdin=archive.stdout, check=True)
+        if archive.wait() != 0:
+            sys.exit(f"git archive {sha} failed")
+    configure = ["cmake", "-S", src, "-B", build, "-G", "Ninja", "-D", "BUILD_TESTING=OFF"]
+    if os.environ.get("GRANSPH_STACK") == "2026":    # inside tools/sid-root.sh's root
+        configure += ["-D", "LAMMPS_SOURCE_DIR=/opt/lammps", "-D", "LAMMPS_BUILD_DIR=/opt/lammps/build"]
+    if arch == "native":    # CMAKE_CXX_FLAGS for commits before GRANSPH_ARCH
+        configure += ["-D", "CMAKE_CXX_FLAGS=-march=native", "-D", "GRANSPH_ARCH=native"]
+    elif arch == "generic":    # a commit before GRANSPH_ARCH is generic as built
+        configure += ["-D", "GRANSPH_ARCH=generic"]
+    print(f"building the plugin of {ref} ({sha[:12]}, {arch}) in {build}", flush=True)
+    for cmd in (configure, ["cmake", "--build", build, "--target", "gransphplugin"]):
+        done = subprocess.run(cmd, capture_output=True, text=True)
+        if done.returncode != 0:
+            sys.exit(f"{' '.join(cmd)} failed:\n{done.stdout[-3000:]}{done.stderr[-3000:]}")
+    return src, build
+
+
+def runs_of(case, against):
+    """the configurations to time for one case"""
+    script = os.path.join(TOP, INPUTS[case])
+    runs = [Run("plain 1 rank", script, 1), Run("plain 2 ranks", script, 2),
+            Run("kk 2 threads", script, 1, KK)]
+    if against:
+        src, build = against
+        old = os.path.join(src, INPUTS[case])
+        runs += [Run("REF plain 2 ranks", old, 2, build=build),
+                 Run("REF kk 2 threads", old, 1, KK, build=build)]
+    if case == "column":
+        runs += [Run("taitwater 1 rank", PEER, 1), Run("taitwater 2 ranks", PEER, 2)]
+    return runs
+
+
+def ratios_of(names):
+    """(label, numerator, denominator) of the ratios that the configurations allow"""
+    wanted = [("best/tw(2)", "best", "taitwater 2 ranks"),
+              ("kk/plain(2)", "kk 2 threads", "plain 2 ranks"),
+              ("best/REF best", "best", "REF best")]
+    return [r for r in wanted if r[2] in names or r[2] == "REF best" and "REF plain 2 ranks" in names]
+
+
+def rate(rates, name):
+    if name == "best":
+        return max(rates["plain 2 ranks"], rates["kk 2 threads"])
+    if name == "REF best":
+        return max(rates["REF plain 2 ranks"], rates["REF kk 2 threads"])
+    return rates[name]
+
+
+def bench(case, label, variables, steps, repeat, against):
+    runs = runs_of(case, against)
+    rounds = [[run.once(variables, steps) for run in runs] for _ in range(repeat)]
+    best = {run.name: max(r[2] for r in results) for run, results in zip(runs, zip(*rounds))}
+    atoms = {r[0] for results in rounds for r in results}
+    if len(atoms) != 1:
+        sys.exit(f"{case} {label}: the runs have different particle counts: {sorted(atoms)}")
+    natoms = atoms.pop()
+    grains = rounds[0][0][1]
+    print(f"\n{case}, {label}: {natoms} particles, {grains} grains, {steps} steps, "
+          f"best of {repeat}")
+    print(f"  {'configuration':20s} {'particle-steps/s':>17s} {'grain-steps/s':>14s}")
+    for run in runs:
+        # the peer's grains: its sand group, as ours
+        print(f"  {run.name:20s} {best[run.name]:17.3e} {best[run.name] * grains / natoms:14.3e}")
+    for label_, num, den in ratios_of(set(best)):
+        print(f"  {label_:20s} {rate(best, num) / rate(best, den):17.2f}")
+    sys.stdout.flush()
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--size", action="append", choices=list(SIZES))
+    parser.add_argument("--case", action="append", choices=list(SIZES))
+    parser.add_argument("--size", action="append")
     parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--against", metavar="REF")
+    parser.add_argument("--against-arch", choices=["as-built", "native", "generic"],
+                        default="as-built")
     opts = parser.parse_args()
-    sizes = [SIZES[name] for name in (opts.size or SIZES)]
-    print(f"{'particles':>10s} {'grains':>8s} " +
-          " ".join(f"{name:>19s}" for name, *_ in RUNS) + " " +
-          " ".join(f"{name:>15s}" for name, *_ in RATIOS))
-    for dx, steps in sizes:
-        results = throughputs(dx, steps, opts.repeat)
-        natoms, grains = results[0][0], results[0][1]
-        if any(r[0] != natoms for r in results):
-            sys.exit(f"dx {dx}: the runs have different particle counts: {results}")
-        rates = [r[2] for r in results]
-        print(f"{natoms:10d} {grains:8d} " + " ".join(f"{r:19.3e}" for r in rates) + " " +
-              " ".join(f"{rates[a] / rates[b]:15.2f}" for _, a, b in RATIOS), flush=True)
-    print("(particle-steps per second, all particles counted: the grains and the floor; "
-          f"best of {opts.repeat} runs)")
+    against = build_against(opts.against, opts.against_arch) if opts.against else None
+    if against:
+        print(f"REF = {opts.against}: its plugin ({opts.against_arch}) on its own inputs")
+    for case in opts.case or list(SIZES):
+        for label, (variables, steps) in SIZES[case].items():
+            if opts.size and label not in opts.size:
+                continue
+            bench(case, label, variables, steps, opts.repeat, against)
+    print("\n(particle-steps: all particles, grains and dummies; grain-steps: grains only. "
+          "best = the faster of plain on 2 ranks and kk on 2 threads)")
 
 
 if __name__ == "__main__":
