@@ -114,7 +114,7 @@ struct Lattice {
       const double gradw[3] = {fw * dx_ij[0], fw * dx_ij[1], fw * dx_ij[2]};
       double dv[3];
       for (int a = 0; a < 3; ++a) dv[a] = -(L[a][0] * xj[0] + L[a][1] * xj[1] + L[a][2] * xj[2]);
-      r.add(PairTerms::make(p, p, dx_ij, dv, gradw, w, 0.0), p, 1.0);
+      r.add(PairTerms::make(p, p, dx_ij, dv, gradw, w, 0.0), p, 1.0, true);
     });
     return r;
   }
@@ -216,8 +216,8 @@ TEST(PairTerms, PressureAndViscosityRepelAndConserveMomentum)
   const TwoParticles two;
   const PairTerms t = two.terms(1.0);
   ParticleRates ri = ParticleRates::zero(), rj = ParticleRates::zero();
-  ri.add(t, two.pj, 1.0);
-  rj.add(t, two.pi, -1.0);
+  ri.add(t, two.pj, 1.0, true);
+  rj.add(t, two.pi, -1.0, true);
   EXPECT_GT(ri.acc[0] * two.xij[0] + ri.acc[1] * two.xij[1] + ri.acc[2] * two.xij[2], 0.0);
   for (int a = 0; a < 3; ++a)
     EXPECT_NEAR(two.pi.mass * ri.acc[a], -two.pj.mass * rj.acc[a], 1e-12 * std::fabs(two.pi.mass * ri.acc[a]));
@@ -229,8 +229,8 @@ TEST(PairTerms, OnePairServesBothParticles)
 {
   const TwoParticles two;
   ParticleRates from_pair = ParticleRates::zero(), own = ParticleRates::zero();
-  from_pair.add(two.terms(1.0), two.pi, -1.0);
-  own.add(two.terms(-1.0), two.pi, 1.0);
+  from_pair.add(two.terms(1.0), two.pi, -1.0, true);
+  own.add(two.terms(-1.0), two.pi, 1.0, true);
   EXPECT_NEAR(from_pair.drho, own.drho, 1e-12 * std::fabs(own.drho));
   EXPECT_NE(own.drho, 0.0);
   for (int a = 0; a < 3; ++a) {
@@ -249,7 +249,7 @@ TEST(PairTerms, ViscousPressureOfOnePair)
   const TwoParticles two;
   const PairTerms t = two.terms(1.0);
   ParticleRates ri = ParticleRates::zero();
-  ri.add(t, two.pj, 1.0);
+  ri.add(t, two.pj, 1.0, true);
   const double rsq = two.xij[0] * two.xij[0] + two.xij[1] * two.xij[1] + two.xij[2] * two.xij[2];
   const double pi_ij = monaghan_viscosity(two.xij, two.vij, rsq, two.h, PAPER_VISCOSITY, two.pi, two.pj);
   EXPECT_GT(pi_ij, 0.0);
@@ -313,7 +313,7 @@ TEST(CorrectedGradient, ExactNextToAWallAndIn2D)
             dv[a] = -(LINEAR_FIELD[a][0] * xj[0] + LINEAR_FIELD[a][1] * xj[1] +
                       (dim == 3 ? LINEAR_FIELD[a][2] * xj[2] : 0.0));
           if (dim == 2) dv[2] = 0.0;
-          r.add(PairTerms::make(p, p, dx_ij, dv, gradw, w, 0.0), p, 1.0);
+          r.add(PairTerms::make(p, p, dx_ij, dv, gradw, w, 0.0), p, 1.0, true);
         }
     r.correct_gradient(dim);
     for (int a = 0; a < dim; ++a)
@@ -344,9 +344,9 @@ ParticleRates rates_over_a_floor(double s, const double *v, bool along_normal)
         const PairTerms t = PairTerms::make(p, p, dx_ij, v, gradw, w, 0.0);
         if (along_normal) {
           walls.add(t, p, 1.0);
-          r.add_force_and_weights(t, p, 1.0);
+          r.add_force_and_weights(t, p, 1.0, true);
         } else
-          r.add(t, p, 1.0);
+          r.add(t, p, 1.0, true);
       }
   if (along_normal) walls.add_along_normal(r);
   return r;
@@ -395,7 +395,7 @@ TEST(CorrectedGradient, FewNeighboursKeepThePlainGradient)
   kernel.w_and_grad_factor(1e-4, w, fw);
   const double gradw[3] = {fw * dx_ij[0], 0.0, 0.0};
   ParticleRates r = ParticleRates::zero();
-  r.add(PairTerms::make(p, p, dx_ij, dv, gradw, w, 0.0), p, 1.0);
+  r.add(PairTerms::make(p, p, dx_ij, dv, gradw, w, 0.0), p, 1.0, true);
   const double plain = r.grad_v[0][0];
   r.correct_gradient(3);
   EXPECT_EQ(r.grad_v[0][0], plain);

@@ -40,7 +40,7 @@ template <class DeviceType> struct DeviceParticles {
   int granularbit, wallbit;
   GRANSPH::WendlandC2 kernel;
   GRANSPH::Viscosity visc;
-  bool wall_normal;
+  bool wall_normal, shape_sums;
 
   KOKKOS_INLINE_FUNCTION int num_neighbours(int i) const { return numneigh(i); }
   KOKKOS_INLINE_FUNCTION int neighbour(int i, int k) const { return neighbors(i, k) & NEIGHMASK; }

@@ -9,6 +9,7 @@
      GRANSPH::WendlandC2 kernel; GRANSPH::Viscosity visc
      bool   wall_normal  (dummy neighbours enter drho and grad_v along the wall
                           normal only: WallVelocitySums)
+     bool   shape_sums   (sum the shape matrix, which only the corrected gradient uses)
 
    Over a full neighbour list (the Kokkos styles: no atomics) each loop runs
    over one particle i and writes only to i. Over a half list with newton off
@@ -111,9 +112,9 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     const PairTerms t = g.terms(pi, pj);
     if (p.wall_normal && p.wall(j)) {
       walls.add(t, pj, 1.0);
-      r.add_force_and_weights(t, pj, 1.0);
+      r.add_force_and_weights(t, pj, 1.0, p.shape_sums);
     } else
-      r.add(t, pj, 1.0);
+      r.add(t, pj, 1.0, p.shape_sums);
     if (vir) {
       const double mm = pi.mass * pj.mass;
       const double fij[3] = {mm * t.tg[0], mm * t.tg[1], mm * t.tg[2]};
@@ -214,17 +215,21 @@ KOKKOS_INLINE_FUNCTION void add_pair_rates(const Particles &p, int i, int nlocal
     PairGeometry g;
     if (!pair_geometry(p, pi, pj, (i_granular && p.granular(j)) || p.visc.walls, g)) continue;
     const PairTerms t = g.terms(pi, pj);
-    if (p.wall_normal && p.wall(j)) {
+    if (!i_granular)    // a dummy's rates serve its force only
+      ri.add_force(t, pj, 1.0);
+    else if (p.wall_normal && p.wall(j)) {
       wi.add(t, pj, 1.0);
-      ri.add_force_and_weights(t, pj, 1.0);
+      ri.add_force_and_weights(t, pj, 1.0, p.shape_sums);
     } else
-      ri.add(t, pj, 1.0);
+      ri.add(t, pj, 1.0, p.shape_sums);
     if (j < nlocal) {
-      if (p.wall_normal && !i_granular) {    // i is j's dummy neighbour
+      if (!p.granular(j))
+        rates[j].add_force(t, pi, -1.0);
+      else if (p.wall_normal && !i_granular) {    // i is j's dummy neighbour
         walls[j].add(t, pi, -1.0);
-        rates[j].add_force_and_weights(t, pi, -1.0);
+        rates[j].add_force_and_weights(t, pi, -1.0, p.shape_sums);
       } else
-        rates[j].add(t, pi, -1.0);
+        rates[j].add(t, pi, -1.0, p.shape_sums);
     }
     if (want_virial) {
       const double mm = pi.mass * pj.mass;

@@ -141,29 +141,38 @@ struct ParticleRates {
             Sym3::zero(), 0.0, 0.0};
   }
 
-  // the terms of a pair with `other`: side +1 for i, -1 for j (grad_j W = -grad_i W)
-  KOKKOS_INLINE_FUNCTION void add(const PairTerms &t, const PairParticle &other, double side)
+  // the terms of a pair with `other`: side +1 for i, -1 for j (grad_j W = -grad_i W); the
+  // shape matrix only if with_shape (it serves the corrected gradient alone)
+  KOKKOS_INLINE_FUNCTION void add(const PairTerms &t, const PairParticle &other, double side,
+                                  bool with_shape)
   {
     drho += other.mass * t.dv_gradw;
     // v_ji (x) grad_i W = v_ij (x) grad_j W = -dv (x) gradw, weighted by the volume m/rho
     const double volume = other.mass * other.inv_rho, s = -volume;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) grad_v[a][b] += s * t.dv[a] * t.gradw[b];
-    add_force_and_weights(t, other, side);
+    add_force_and_weights(t, other, side, with_shape);
   }
 
   // the acceleration, the shape matrix (x_ji (x) grad_i W = -dx (x) gradw, symmetric as
-  // gradw is parallel to dx) and the kernel-weighted sums
+  // gradw is parallel to dx) if with_shape, and the kernel-weighted sums
   KOKKOS_INLINE_FUNCTION void add_force_and_weights(const PairTerms &t, const PairParticle &other,
-                                                    double side)
+                                                    double side, bool with_shape)
   {
-    for (int a = 0; a < 3; ++a) acc[a] += side * other.mass * t.tg[a];
+    add_force(t, other, side);
     const double volume = other.mass * other.inv_rho, s = -volume;
-    shape = shape +
-        s * Sym3{t.dx[0] * t.gradw[0], t.dx[1] * t.gradw[1], t.dx[2] * t.gradw[2],
-                 t.dx[0] * t.gradw[1], t.dx[0] * t.gradw[2], t.dx[1] * t.gradw[2]};
+    if (with_shape)
+      shape = shape +
+          s * Sym3{t.dx[0] * t.gradw[0], t.dx[1] * t.gradw[1], t.dx[2] * t.gradw[2],
+                   t.dx[0] * t.gradw[1], t.dx[0] * t.gradw[2], t.dx[1] * t.gradw[2]};
     w_sum += volume * t.w;
     visc_w += volume * t.w * t.visc_pressure;
+  }
+
+  // the acceleration alone: all that the rates of a dummy particle serve (its force, eq. 9)
+  KOKKOS_INLINE_FUNCTION void add_force(const PairTerms &t, const PairParticle &other, double side)
+  {
+    for (int a = 0; a < 3; ++a) acc[a] += side * other.mass * t.tg[a];
   }
 
   KOKKOS_INLINE_FUNCTION void add(const ParticleRates &r)

@@ -41,7 +41,7 @@ struct HostParticles {
   int granularbit, wallbit;
   GRANSPH::WendlandC2 kernel;
   GRANSPH::Viscosity visc;
-  bool wall_normal;
+  bool wall_normal, shape_sums;
 
   int num_neighbours(int i) const { return numneigh[i]; }
   int neighbour(int i, int k) const { return firstneigh[i][k] & NEIGHMASK; }
@@ -91,7 +91,7 @@ void PairSPHGranular::compute(int eflag, int vflag)
   pack_particles(0, nall);
   const HostParticles p{particles, list->firstneigh, list->numneigh, atom->mask, fix.groupbit,
                         fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), visc,
-                        wall_normal != 0};
+                        wall_normal != 0, corrected_gradient != 0};
   if (update->setupflag) check_no_coincident(p);
   if (fix.wallbit) {
     wall_stresses(p);

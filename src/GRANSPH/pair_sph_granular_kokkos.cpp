@@ -100,6 +100,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   p.kernel = GRANSPH::WendlandC2::make(h, domain->dimension);
   p.visc = visc;
   p.wall_normal = wall_normal != 0;
+  p.shape_sums = corrected_gradient != 0;
 
   if (update->setupflag) {    // no two interacting particles on one place
     auto ilist = k_list->d_ilist;
