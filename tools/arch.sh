@@ -1,8 +1,13 @@
 # Sourced by tools/deps.sh and tools/sid-root.sh: the instruction set LAMMPS and the
 # plugin are compiled for.
-#   GRANSPH_ARCH=native   (default) this machine's: AVX2 and FMA where the CPU has them
-#   GRANSPH_ARCH=generic  the compiler's default target (x86-64: SSE2, no FMA), for a
-#                         build that runs on any machine of the architecture
+#   GRANSPH_ARCH=native   (default) this machine's: AVX2, FMA, AVX-512 where the CPU has them
+#   GRANSPH_ARCH=generic  the compiler's default target (x86-64: SSE2), for a build that
+#                         runs on any machine of the architecture
+# Either way without contracting a * b + c into one fused multiply-add: FMA rounds once
+# where the source rounds twice, and that moves every result in its last digits with the
+# instruction set (the force-style YAML references, the example logs, the rank and
+# continuation tests hold to 1e-12 and less, on any machine only without it). Measured,
+# contraction gained nothing (bench/README.md).
 # A build for another GRANSPH_ARCH is a build of its own (the LAMMPS stamps hash the
 # flags, ccache keys on them).
 gransph_arch() {
@@ -12,9 +17,9 @@ gransph_arch() {
   esac
 }
 
-# the CMake arguments that set it for LAMMPS (empty for generic)
-gransph_arch_cmake_args() {
+# the C++ compiler flags for it; give them to CMake as one argument:
+#   cmake ... -D "CMAKE_CXX_FLAGS=$(gransph_arch_cxx_flags)"
+gransph_arch_cxx_flags() {
   local arch; arch=$(gransph_arch) || return 1
-  [ "$arch" = native ] && echo "-D CMAKE_CXX_FLAGS=-march=native"
-  return 0
+  if [ "$arch" = native ]; then echo "-march=native -ffp-contract=off"; else echo "-ffp-contract=off"; fi
 }

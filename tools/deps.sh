@@ -27,6 +27,8 @@ log() { printf '[deps] %s\n' "$*"; }
 
 # shellcheck source=tools/apt-mirror.sh
 source "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/apt-mirror.sh"
+# shellcheck source=tools/arch.sh
+source "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/arch.sh"
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
 
@@ -132,7 +134,8 @@ lammps_cmake_args() {
 
 build_lammps() {
   local src=$GRANSPH_DEPS/lammps build=$GRANSPH_DEPS/lammps/build
-  local config; config=$(lammps_cmake_args | sha256sum | cut -c1-16)
+  local cxx_flags; cxx_flags=$(gransph_arch_cxx_flags)
+  local config; config=$( (lammps_cmake_args; echo "$cxx_flags") | sha256sum | cut -c1-16)
   local stamp=$build/.built-$LAMMPS_DEB-$config
   [ -f "$stamp" ] && [ -x "$build/lmp" ] && return
   if [ ! -f "$src/.unpacked-$LAMMPS_DEB" ]; then
@@ -143,7 +146,7 @@ build_lammps() {
   fi
   log "building LAMMPS (this takes ~6 min on 2 cores without a warm ccache)"
   # shellcheck disable=SC2046
-  cmake -S "$src/cmake" -B "$build" $(lammps_cmake_args) >/dev/null
+  cmake -S "$src/cmake" -B "$build" $(lammps_cmake_args) -D "CMAKE_CXX_FLAGS=$cxx_flags" >/dev/null
   cmake --build "$build" -j "$JOBS" >/dev/null
   touch "$stamp"
 }
