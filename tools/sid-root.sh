@@ -195,9 +195,9 @@ check_kokkos() {
   [ -n "$1" ] || die "$2 has no libkokkos-dev: the 2026 stack needs sid's Kokkos $KOKKOS_MAJOR.x."
   [ "${up%%.*}" = "$KOKKOS_MAJOR" ] ||
     die "$2 has Kokkos ${up%%-*} (libkokkos-dev $1), but src/GRANSPH/gransph_kokkos_compat.h" \
-        "serves Kokkos $KOKKOS_MAJOR.x only. Keep using a root made before (run without" \
-        "GRANSPH_SID_REFRESH), or port the compatibility layer to Kokkos ${up%%.*} and set" \
-        "KOKKOS_MAJOR in tools/sid-root.sh."
+        "serves Kokkos $KOKKOS_MAJOR.x only. Keep a root with Kokkos $KOKKOS_MAJOR (a root in place" \
+        "is remade only under GRANSPH_SID_REFRESH), or port the compatibility layer to" \
+        "Kokkos ${up%%.*} and set KOKKOS_MAJOR in tools/sid-root.sh."
 }
 # warnings about the root as it is: versions other than the tested ones
 check_root() {
