@@ -491,6 +491,12 @@ for arg in "$@"; do
 done
 
 mkdir -p "$SID"
+# both checkouts of a machine share the stack: one makes it at a time, and the other
+# decides once it has finished
+if [ "$PLAN" = 0 ]; then
+  exec 9> "$SID/.making"
+  flock -n 9 || { log "another tools/sid-root.sh is making the stack: waiting for it"; flock 9; }
+fi
 decide_root
 [ "$ROOT_ACTION" = keep ] && check_root
 decide_lammps
