@@ -83,7 +83,7 @@ timed() { # timed LABEL CMD...: run CMD, append its wall time to times.log
 [ "$(id -u)" -eq 0 ] || die "must run as root (mmdebstrap, chroot and unshare need it)"
 # shellcheck source=tools/arch.sh
 source "$here/arch.sh"
-ARCH_ARGS=$(gransph_arch_cmake_args) || exit 1
+ARCH_CXX_FLAGS=$(gransph_arch_cxx_flags) || exit 1
 
 # sid_run CMD...: CMD in the root, /proc /sys /dev and $top mounted in a private
 # mount namespace that ends with CMD
@@ -414,15 +414,14 @@ unpack_lammps() {
 # the instruction set of tools/arch.sh (GRANSPH_ARCH).
 # LAMMPS since 2025 always has exceptions (no LAMMPS_EXCEPTIONS option any more).
 lammps_cmake_args() {
-  # shellcheck disable=SC2086 # ARCH_ARGS is words
   echo -G Ninja -D CMAKE_BUILD_TYPE=Release -D CMAKE_CXX_COMPILER_LAUNCHER=ccache \
     -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=on \
     -D PKG_KOKKOS=on -D EXTERNAL_KOKKOS=on \
     -D PKG_PLUGIN=on -D PKG_SPH=on -D PKG_GRANULAR=on -D PKG_MOLECULE=on \
-    -D WITH_PNG=off -D WITH_JPEG=off -D WITH_FFMPEG=off $ARCH_ARGS
+    -D WITH_PNG=off -D WITH_JPEG=off -D WITH_FFMPEG=off
 }
 lammps_stamp() {
-  echo "$ROOT/opt/lammps/build/.built-$L_DEB-$(lammps_cmake_args | sha256sum | cut -c1-16)"
+  echo "$ROOT/opt/lammps/build/.built-$L_DEB-$( (lammps_cmake_args; echo "$ARCH_CXX_FLAGS") | sha256sum | cut -c1-16)"
 }
 
 build_lammps() {
@@ -430,7 +429,7 @@ build_lammps() {
   log "building LAMMPS $name in the root (~16 min on 2 idle cores without a warm ccache)"
   # shellcheck disable=SC2046
   SID_ENV='' timed "configure LAMMPS $name" sid_run cmake -S /opt/lammps/cmake -B /opt/lammps/build \
-    $(lammps_cmake_args) >/dev/null
+    $(lammps_cmake_args) -D "CMAKE_CXX_FLAGS=$ARCH_CXX_FLAGS" >/dev/null
   timed "build LAMMPS $name (-j$JOBS)" sid_run cmake --build /opt/lammps/build -j "$JOBS" >/dev/null
   touch "$(lammps_stamp)"
 }
