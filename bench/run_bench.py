@@ -4,7 +4,7 @@ the examples' inputs, for the plain styles on 1 and 2 MPI ranks and the /kk styl
 on 2 OpenMP threads, beside LAMMPS' own SPH fluid on the column's particles and,
 with --against, beside the plugin of an earlier commit.
 
-  bench/run_bench.py [--case column|flume|jet]... [--size S]... [--repeat N]
+  bench/run_bench.py [--case column|flume|jet]... [--size S]... [--repeat N] [--steps N]
                      [--against REF [--against-arch as-built|native|generic]]
 
 Cases (the examples' own inputs, for a fixed number of steps):
@@ -19,6 +19,8 @@ spacing, 1.2e5; the jet 1.1e5).
 --repeat N: the best of N runs of each (default 3; a shared machine's noise only
 ever slows a run down). Every run of one size goes round in turn, so that a slow
 phase of the machine falls on all of them.
+--steps N: every run this many steps instead of each case's own (a smoke run: ctest
+Bench:smoke runs the script so, that it cannot rot; its figures mean nothing).
 --against REF: builds the plugin of git commit REF into bench/against/SHA/ (against
 the same LAMMPS) and runs it, on REF's own example inputs, beside the current one:
 the ratio is what a user gains over REF, in one run of this script.
@@ -164,6 +166,7 @@ def main():
     parser.add_argument("--case", action="append", choices=list(SIZES))
     parser.add_argument("--size", action="append")
     parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--steps", type=int)
     parser.add_argument("--against", metavar="REF")
     parser.add_argument("--against-arch", choices=["as-built", "native", "generic"],
                         default="as-built")
@@ -175,7 +178,7 @@ def main():
         for label, (variables, steps) in SIZES[case].items():
             if opts.size and label not in opts.size:
                 continue
-            bench(case, label, variables, steps, opts.repeat, against)
+            bench(case, label, variables, opts.steps or steps, opts.repeat, against)
     print("\n(particle-steps: all particles, grains and dummies; grain-steps: grains only. "
           "best = the faster of plain on 2 ranks and kk on 2 threads)")
 
