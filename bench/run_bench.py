@@ -84,7 +84,7 @@ class Run:
 
 
 def build_against(ref, arch):
-    """the plugin of commit REF, built into bench/against/SHA[-native]/; its folder"""
+    """the plugin of commit REF, built into bench/against/SHA[-ARCH]/; its sources and build"""
     sha = subprocess.run(["git", "-C", TOP, "rev-parse", "--verify", ref + "^{commit}"],
                          capture_output=True, text=True, check=True).stdout.strip()
     where = os.path.join(HERE, "against", sha[:12] + ("" if arch == "as-built" else "-" + arch))
@@ -99,7 +99,7 @@ def build_against(ref, arch):
     if os.environ.get("GRANSPH_STACK") == "2026":    # inside tools/sid-root.sh's root
         configure += ["-D", "LAMMPS_SOURCE_DIR=/opt/lammps", "-D", "LAMMPS_BUILD_DIR=/opt/lammps/build"]
     if arch == "native":    # CMAKE_CXX_FLAGS for commits before GRANSPH_ARCH
-        configure += ["-D", "CMAKE_CXX_FLAGS=-march=native", "-D", "GRANSPH_ARCH=native"]
+        configure += ["-D", "CMAKE_CXX_FLAGS=-march=native -ffp-contract=off", "-D", "GRANSPH_ARCH=native"]
     elif arch == "generic":    # a commit before GRANSPH_ARCH is generic as built
         configure += ["-D", "GRANSPH_ARCH=generic"]
     print(f"building the plugin of {ref} ({sha[:12]}, {arch}) in {build}", flush=True)
