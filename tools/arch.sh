@@ -4,10 +4,10 @@
 #   GRANSPH_ARCH=generic  the compiler's default target (x86-64: SSE2), for a build that
 #                         runs on any machine of the architecture
 # Either way without contracting a * b + c into one fused multiply-add: FMA rounds once
-# where the source rounds twice, and that moves every result in its last digits with the
-# instruction set (the force-style YAML references, the example logs, the rank and
-# continuation tests hold to 1e-12 and less, on any machine only without it). Measured,
-# contraction gained nothing (bench/README.md).
+# where the source rounds twice, so results would move in their last digits with the
+# instruction set; with it, the force-style YAML reference of the paper's settings
+# (PairStyle:sph_granular_paper, 5e-13) failed after its run. Measured, contraction gained
+# nothing (bench/README.md).
 # A build for another GRANSPH_ARCH is a build of its own (the LAMMPS stamps hash the
 # flags, ccache keys on them).
 gransph_arch() {
