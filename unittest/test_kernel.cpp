@@ -1,11 +1,14 @@
-// Unit tests of the Wendland C2 kernel (paper eq. 3) and the SPH sums built on it.
+// Unit tests of the Wendland C2 kernel (paper eq. 3) and the SPH sums built on it, the
+// sums through the neighbour loops of the pair styles (gransph_neighbour_sums.h).
 
 #include "gransph_kernel.h"
+#include "gransph_neighbour_sums.h"
 #include "gransph_pair_terms.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 using namespace GRANSPH;
 
@@ -78,6 +81,40 @@ TEST(WendlandC2, GradientIsAntisymmetric)
 }
 
 namespace {
+// Particle 0 and its neighbours, each a grain or a dummy: the accessor of the neighbour
+// sums (gransph_neighbour_sums.h) over a list of particle 0's neighbours alone.
+struct Neighbourhood {
+  enum Role { GRAIN, DUMMY, OTHER };    // OTHER: neither (the pair styles pack it massless)
+  std::vector<PairParticle> particles;
+  std::vector<Role> roles;
+  WendlandC2 kernel;
+  Viscosity visc{0.0, 0.0, false, Viscosity::BULK, 0.0};
+  bool wall_normal = false, shape_sums = true;
+
+  Neighbourhood(double h, int dim) : kernel(WendlandC2::make(h, dim)) {}
+
+  void add(Role role, const PairParticle &particle)
+  {
+    particles.push_back(particle);
+    roles.push_back(role);
+  }
+  int num_neighbours(int i) const { return i == 0 ? int(particles.size()) - 1 : 0; }
+  int neighbour(int, int k) const { return k + 1; }
+  const PairParticle &particle(int i) const { return particles[i]; }
+  bool granular(int i) const { return roles[i] == GRAIN; }
+  bool wall(int i) const { return roles[i] == DUMMY; }
+
+  // the rates of grain 0, and its virial if vir is not null
+  ParticleRates rates(double *vir = nullptr) const { return granular_rates(*this, 0, vir); }
+};
+
+// a particle at x with velocity v, otherwise as particle()
+PairParticle particle_at(const double *x, const double *v, double mass, double rho,
+                         const Sym3 &sigma = Sym3::zero())
+{
+  return PairParticle::make(x, v, mass, rho, sigma, sound_speed(20e6, rho));
+}
+
 // Particles on a simple cubic lattice around the origin, spacing dx, h = 1.3 dx,
 // moving with the velocity field v = L x. With a free surface at z = surface, only
 // the particles below it are neighbours (the origin is half a spacing or more below).
@@ -102,21 +139,14 @@ struct Lattice {
   // rates of the particle at the origin for velocity gradient L
   ParticleRates rates(const double L[3][3]) const
   {
-    ParticleRates r = ParticleRates::zero();
-    const PairParticle p = particle(mass(), rho, Sym3::zero());
+    Neighbourhood near(h, 3);
+    near.add(Neighbourhood::GRAIN, particle(mass(), rho, Sym3::zero()));
     for_neighbours([&](const double *xj) {
-      const double dx_ij[3] = {-xj[0], -xj[1], -xj[2]};
-      const double rsq = xj[0] * xj[0] + xj[1] * xj[1] + xj[2] * xj[2];
-      const WendlandC2 kernel = WendlandC2::make(h, 3);
-      if (rsq >= kernel.cutsq()) return;
-      double w, fw;
-      kernel.w_and_grad_factor(rsq, w, fw);
-      const double gradw[3] = {fw * dx_ij[0], fw * dx_ij[1], fw * dx_ij[2]};
-      double dv[3];
-      for (int a = 0; a < 3; ++a) dv[a] = -(L[a][0] * xj[0] + L[a][1] * xj[1] + L[a][2] * xj[2]);
-      r.add(PairTerms::make(p, p, dx_ij, dv, gradw, w, 0.0), p, 1.0, true);
+      double vj[3];
+      for (int a = 0; a < 3; ++a) vj[a] = L[a][0] * xj[0] + L[a][1] * xj[1] + L[a][2] * xj[2];
+      near.add(Neighbourhood::GRAIN, particle_at(xj, vj, mass(), rho));
     });
-    return r;
+    return near.rates();
   }
 
   // sum_j V_j (x_j - x_i)_x dW/dx_i: the discrete form of d x / d x = 1, which
@@ -178,35 +208,41 @@ TEST(PairTerms, UniformCompressionRaisesDensity)
 
 TEST(PairTerms, ViscosityOnlyBetweenApproachingParticles)
 {
-  const PairParticle p = particle(1.0, 1000.0, Sym3::zero());
   const double dx[3] = {0.01, 0.0, 0.0};
-  const double approach[3] = {-1.0, 0.0, 0.0};
-  const double separate[3] = {1.0, 0.0, 0.0};
-  EXPECT_GT(monaghan_viscosity(dx, approach, 1e-4, 0.012, PAPER_VISCOSITY, p, p), 0.0);
-  EXPECT_EQ(monaghan_viscosity(dx, separate, 1e-4, 0.012, PAPER_VISCOSITY, p, p), 0.0);
+  const double approach = -1.0 * dx[0], separate = 1.0 * dx[0];    // v_ij . x_ij
+  const double c = sound_speed(20e6, 1000.0);
+  EXPECT_GT(monaghan_viscosity(approach, 1e-4, 0.012, PAPER_VISCOSITY, c, 1000.0), 0.0);
+  EXPECT_EQ(monaghan_viscosity(separate, 1e-4, 0.012, PAPER_VISCOSITY, c, 1000.0), 0.0);
 }
 
 namespace {
-// two particles under pressure, approaching: i at x_ij from j
+// two particles under pressure, approaching: i at x_ij from j, with the paper's viscosity
 struct TwoParticles {
-  const PairParticle pi = particle(0.5, 1000.0, Sym3::iso(-2.0e4));
-  const PairParticle pj = particle(0.7, 1100.0, {-1.0e4, -1.2e4, -0.9e4, 300.0, -200.0, 100.0});
   const double h = 0.012;
   const double xij[3] = {0.01, 0.002, -0.003};
   const double vij[3] = {-0.4, 0.1, 0.0};
+  const double zero[3] = {0.0, 0.0, 0.0};
+  const double mi = 0.5, mj = 0.7, rhoi = 1000.0, rhoj = 1100.0;
+  const Sym3 si = Sym3::iso(-2.0e4), sj{-1.0e4, -1.2e4, -0.9e4, 300.0, -200.0, 100.0};
+  const PairParticle pi = particle_at(xij, vij, mi, rhoi, si);
+  const PairParticle pj = particle_at(zero, zero, mj, rhoj, sj);
 
-  // the pair seen from i (from = +1) or from j (from = -1)
-  PairTerms terms(double from) const
+  // the pair seen from i (j its neighbour) or from j; j is a dummy if j_role says so
+  Neighbourhood from_i(Neighbourhood::Role j_role = Neighbourhood::GRAIN) const
   {
-    const double x[3] = {from * xij[0], from * xij[1], from * xij[2]};
-    const double v[3] = {from * vij[0], from * vij[1], from * vij[2]};
-    const double rsq = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
-    double w, fw;
-    WendlandC2::make(h, 3).w_and_grad_factor(rsq, w, fw);
-    const double g[3] = {fw * x[0], fw * x[1], fw * x[2]};
-    const PairParticle &self = from > 0 ? pi : pj, &other = from > 0 ? pj : pi;
-    return PairTerms::make(self, other, x, v, g, w,
-                           monaghan_viscosity(x, v, rsq, h, PAPER_VISCOSITY, self, other));
+    Neighbourhood near(h, 3);
+    near.visc = PAPER_VISCOSITY;
+    near.add(Neighbourhood::GRAIN, pi);
+    near.add(j_role, pj);
+    return near;
+  }
+  Neighbourhood from_j() const
+  {
+    Neighbourhood near(h, 3);
+    near.visc = PAPER_VISCOSITY;
+    near.add(Neighbourhood::GRAIN, pj);
+    near.add(Neighbourhood::GRAIN, pi);
+    return near;
   }
 };
 }    // namespace
@@ -214,32 +250,57 @@ struct TwoParticles {
 TEST(PairTerms, PressureAndViscosityRepelAndConserveMomentum)
 {
   const TwoParticles two;
-  const PairTerms t = two.terms(1.0);
-  ParticleRates ri = ParticleRates::zero(), rj = ParticleRates::zero();
-  ri.add(t, two.pj, 1.0, true);
-  rj.add(t, two.pi, -1.0, true);
+  const ParticleRates ri = two.from_i().rates(), rj = two.from_j().rates();
   EXPECT_GT(ri.acc[0] * two.xij[0] + ri.acc[1] * two.xij[1] + ri.acc[2] * two.xij[2], 0.0);
   for (int a = 0; a < 3; ++a)
-    EXPECT_NEAR(two.pi.mass * ri.acc[a], -two.pj.mass * rj.acc[a], 1e-12 * std::fabs(two.pi.mass * ri.acc[a]));
+    EXPECT_NEAR(two.mi * ri.acc[a], -two.mj * rj.acc[a], 1e-12 * std::fabs(two.mi * ri.acc[a]));
+  // the continuity equation sees the same approach from either side
+  EXPECT_NEAR(ri.drho / two.mj, rj.drho / two.mi, 1e-12 * std::fabs(ri.drho / two.mj));
+  EXPECT_GT(ri.drho, 0.0);
 }
 
-// A half neighbour list adds each pair's terms to j with side -1: the same rates as
-// j's own view of the pair, which a full list uses.
-TEST(PairTerms, OnePairServesBothParticles)
+// The force on a dummy particle (eq. 9) is the reaction of the grain's acceleration by it,
+// and each side's virial is half the pair's.
+TEST(PairTerms, WallForceIsTheReactionOnTheGrain)
 {
   const TwoParticles two;
-  ParticleRates from_pair = ParticleRates::zero(), own = ParticleRates::zero();
-  from_pair.add(two.terms(1.0), two.pi, -1.0, true);
-  own.add(two.terms(-1.0), two.pi, 1.0, true);
-  EXPECT_NEAR(from_pair.drho, own.drho, 1e-12 * std::fabs(own.drho));
-  EXPECT_NE(own.drho, 0.0);
+  double vir_i[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, vir_d[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  const ParticleRates ri = two.from_i(Neighbourhood::DUMMY).rates(vir_i);
+  Neighbourhood walls = two.from_j();
+  walls.roles[0] = Neighbourhood::DUMMY;
+  double fd[3];
+  wall_force(walls, 0, fd, vir_d);
   for (int a = 0; a < 3; ++a) {
-    EXPECT_NEAR(from_pair.acc[a], own.acc[a], 1e-12 * std::fabs(own.acc[a]));
-    for (int b = 0; b < 3; ++b)
-      EXPECT_NEAR(from_pair.grad_v[a][b], own.grad_v[a][b], 1e-12 * std::fabs(own.grad_v[a][b]));
+    EXPECT_NEAR(fd[a], -two.mi * ri.acc[a], 1e-12 * std::fabs(fd[a]));
+    EXPECT_NE(fd[a], 0.0);
   }
-  EXPECT_NEAR(from_pair.shape.xz, own.shape.xz, 1e-12 * std::fabs(own.shape.xz));
-  EXPECT_NEAR(from_pair.viscous_pressure(), own.viscous_pressure(), 1e-12 * own.viscous_pressure());
+  const double f[3] = {two.mi * ri.acc[0], two.mi * ri.acc[1], two.mi * ri.acc[2]};
+  const double x_f[6] = {two.xij[0] * f[0], two.xij[1] * f[1], two.xij[2] * f[2],
+                         two.xij[0] * f[1], two.xij[0] * f[2], two.xij[1] * f[2]};
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_NEAR(vir_i[k], 0.5 * x_f[k], 1e-12 * std::fabs(x_f[k]) + 1e-300) << k;
+    EXPECT_NEAR(vir_d[k], 0.5 * x_f[k], 1e-12 * std::fabs(x_f[k]) + 1e-300) << k;
+  }
+}
+
+// Neighbours outside the support, and atoms that are neither grain nor dummy (packed
+// massless by the pair styles), add nothing.
+TEST(PairTerms, OnlyNeighboursInsideTheSupportCount)
+{
+  const TwoParticles two;
+  const ParticleRates alone = two.from_i().rates();
+  Neighbourhood near = two.from_i();
+  const double far[3] = {0.05, 0.0, 0.0}, v[3] = {3.0, 0.0, 0.0};
+  near.add(Neighbourhood::GRAIN, particle_at(far, v, 1.0, 1000.0, Sym3::iso(-1e5)));
+  near.add(Neighbourhood::DUMMY, particle_at(far, v, 1.0, 1000.0, Sym3::iso(-1e5)));
+  const double close[3] = {0.0, 0.0, 0.005};
+  PairParticle other = PairParticle::make(close, v, 0.0, 1.0, Sym3::zero(), 0.0);
+  near.particles.push_back(other);
+  near.roles.push_back(Neighbourhood::OTHER);
+  const ParticleRates r = near.rates();
+  EXPECT_EQ(r.drho, alone.drho);
+  for (int a = 0; a < 3; ++a) EXPECT_EQ(r.acc[a], alone.acc[a]);
+  EXPECT_EQ(r.w_sum, alone.w_sum);
 }
 
 // The viscous pressure of a pair is rho_i rho_j Pi_ij / 2: the pressure that, put in
@@ -247,13 +308,13 @@ TEST(PairTerms, OnePairServesBothParticles)
 TEST(PairTerms, ViscousPressureOfOnePair)
 {
   const TwoParticles two;
-  const PairTerms t = two.terms(1.0);
-  ParticleRates ri = ParticleRates::zero();
-  ri.add(t, two.pj, 1.0, true);
+  const ParticleRates ri = two.from_i().rates();
   const double rsq = two.xij[0] * two.xij[0] + two.xij[1] * two.xij[1] + two.xij[2] * two.xij[2];
-  const double pi_ij = monaghan_viscosity(two.xij, two.vij, rsq, two.h, PAPER_VISCOSITY, two.pi, two.pj);
+  const double vdotx = two.vij[0] * two.xij[0] + two.vij[1] * two.xij[1] + two.vij[2] * two.xij[2];
+  const double pi_ij = monaghan_viscosity(vdotx, rsq, two.h, PAPER_VISCOSITY,
+                                          0.5 * (two.pi.c + two.pj.c), 0.5 * (two.rhoi + two.rhoj));
   EXPECT_GT(pi_ij, 0.0);
-  EXPECT_NEAR(ri.viscous_pressure(), 0.5 * two.pi.rho * two.pj.rho * pi_ij, 1e-12 * ri.viscous_pressure());
+  EXPECT_NEAR(ri.viscous_pressure(), 0.5 * two.rhoi * two.rhoj * pi_ij, 1e-12 * ri.viscous_pressure());
 }
 
 // A general linear velocity field v = L x
@@ -293,28 +354,24 @@ TEST(CorrectedGradient, ExactNextToAWallAndIn2D)
 {
   const double dx = 0.01, h = 0.012, rho = 1500.0;
   for (int dim : {2, 3}) {
-    const PairParticle p = particle(rho * std::pow(dx, dim), rho, Sym3::zero());
-    const WendlandC2 kernel = WendlandC2::make(h, dim);
-    ParticleRates r = ParticleRates::zero();
+    const double m = rho * std::pow(dx, dim);
+    Neighbourhood near(h, dim);
+    near.add(Neighbourhood::GRAIN, particle(m, rho, Sym3::zero()));
     // grain at the origin in a monolayer (j = 0), dummies in three layers below it
     const int nk = dim == 3 ? 4 : 0;
     for (int i = -4; i <= 4; ++i)
       for (int k = -nk; k <= nk; ++k)
         for (int j = -3; j <= 0; ++j) {
           const double xj[3] = {i * dx, dim == 3 ? k * dx : j * dx, dim == 3 ? j * dx : 0.0};
-          const double dx_ij[3] = {-xj[0], -xj[1], -xj[2]};
-          const double rsq = xj[0] * xj[0] + xj[1] * xj[1] + xj[2] * xj[2];
-          if (rsq == 0.0 || rsq >= kernel.cutsq()) continue;
-          double w, fw;
-          kernel.w_and_grad_factor(rsq, w, fw);
-          const double gradw[3] = {fw * dx_ij[0], fw * dx_ij[1], fw * dx_ij[2]};
-          double dv[3];
+          if (xj[0] == 0.0 && xj[1] == 0.0 && xj[2] == 0.0) continue;
+          double vj[3];
           for (int a = 0; a < 3; ++a)
-            dv[a] = -(LINEAR_FIELD[a][0] * xj[0] + LINEAR_FIELD[a][1] * xj[1] +
-                      (dim == 3 ? LINEAR_FIELD[a][2] * xj[2] : 0.0));
-          if (dim == 2) dv[2] = 0.0;
-          r.add(PairTerms::make(p, p, dx_ij, dv, gradw, w, 0.0), p, 1.0, true);
+            vj[a] = LINEAR_FIELD[a][0] * xj[0] + LINEAR_FIELD[a][1] * xj[1] +
+                (dim == 3 ? LINEAR_FIELD[a][2] * xj[2] : 0.0);
+          if (dim == 2) vj[2] = 0.0;
+          near.add(j == 0 ? Neighbourhood::GRAIN : Neighbourhood::DUMMY, particle_at(xj, vj, m, rho));
         }
+    ParticleRates r = near.rates();
     r.correct_gradient(dim);
     for (int a = 0; a < dim; ++a)
       for (int b = 0; b < dim; ++b) EXPECT_NEAR(r.grad_v[a][b], LINEAR_FIELD[a][b], 1e-12) << dim;
@@ -327,29 +384,18 @@ TEST(CorrectedGradient, ExactNextToAWallAndIn2D)
 // (WallVelocitySums).
 ParticleRates rates_over_a_floor(double s, const double *v, bool along_normal)
 {
-  const double dx = 0.01, h = 0.012, rho = 2450.0;
-  const PairParticle p = particle(rho * dx * dx * dx, rho, Sym3::zero());
-  const WendlandC2 kernel = WendlandC2::make(h, 3);
-  ParticleRates r = ParticleRates::zero();
-  WallVelocitySums walls = WallVelocitySums::zero();
+  const double dx = 0.01, h = 0.012, rho = 2450.0, m = rho * dx * dx * dx;
+  const double zero[3] = {0.0, 0.0, 0.0};
+  Neighbourhood near(h, 3);
+  near.wall_normal = along_normal;
+  near.add(Neighbourhood::GRAIN, particle_at(zero, v, m, rho));
   for (int i = -4; i <= 4; ++i)
     for (int j = -4; j <= 4; ++j)
       for (int k = 0; k < 3; ++k) {
-        const double dx_ij[3] = {(s - i) * dx, -j * dx, (k + 1) * dx};    // grain - dummy
-        const double rsq = dx_ij[0] * dx_ij[0] + dx_ij[1] * dx_ij[1] + dx_ij[2] * dx_ij[2];
-        if (rsq >= kernel.cutsq()) continue;
-        double w, fw;
-        kernel.w_and_grad_factor(rsq, w, fw);
-        const double gradw[3] = {fw * dx_ij[0], fw * dx_ij[1], fw * dx_ij[2]};
-        const PairTerms t = PairTerms::make(p, p, dx_ij, v, gradw, w, 0.0);
-        if (along_normal) {
-          walls.add(t, p, 1.0);
-          r.add_force_and_weights(t, p, 1.0, true);
-        } else
-          r.add(t, p, 1.0, true);
+        const double xd[3] = {(i - s) * dx, j * dx, -(k + 1) * dx};
+        near.add(Neighbourhood::DUMMY, particle_at(xd, zero, m, rho));
       }
-  if (along_normal) walls.add_along_normal(r);
-  return r;
+  return near.rates();
 }
 
 // Sliding over the floor, a grain sees the dummies' sums along the wall swing with its
@@ -388,15 +434,13 @@ TEST(WallGradient, AlongTheNormalTheFloorIsSmooth)
 // plain gradient stays.
 TEST(CorrectedGradient, FewNeighboursKeepThePlainGradient)
 {
-  const PairParticle p = particle(1.0, 1000.0, Sym3::zero());
-  const double dx_ij[3] = {-0.01, 0.0, 0.0}, dv[3] = {-0.02, 0.0, 0.0};
-  const WendlandC2 kernel = WendlandC2::make(0.012, 3);
-  double w, fw;
-  kernel.w_and_grad_factor(1e-4, w, fw);
-  const double gradw[3] = {fw * dx_ij[0], 0.0, 0.0};
-  ParticleRates r = ParticleRates::zero();
-  r.add(PairTerms::make(p, p, dx_ij, dv, gradw, w, 0.0), p, 1.0, true);
+  Neighbourhood near(0.012, 3);
+  const double zero[3] = {0.0, 0.0, 0.0}, xj[3] = {0.01, 0.0, 0.0}, vj[3] = {0.02, 0.0, 0.0};
+  near.add(Neighbourhood::GRAIN, particle_at(zero, zero, 1.0, 1000.0));
+  near.add(Neighbourhood::GRAIN, particle_at(xj, vj, 1.0, 1000.0));
+  ParticleRates r = near.rates();
   const double plain = r.grad_v[0][0];
+  EXPECT_NE(plain, 0.0);
   r.correct_gradient(3);
   EXPECT_EQ(r.grad_v[0][0], plain);
 }
@@ -405,10 +449,11 @@ namespace {
 // a dummy particle dz below a grain of stress sk; gravity -z
 WallSums one_grain_above(const Sym3 &sk, double rho, double dz)
 {
-  WallSums sums = WallSums::zero();
-  const double r_dk[3] = {0.0, 0.0, -dz};
-  sums.add(sk, rho, r_dk, WendlandC2::make(0.01, 3).w(dz * dz));
-  return sums;
+  Neighbourhood near(0.01, 3);
+  const double zero[3] = {0.0, 0.0, 0.0}, up[3] = {0.0, 0.0, dz};
+  near.add(Neighbourhood::DUMMY, particle_at(zero, zero, 1.0, 1000.0));
+  near.add(Neighbourhood::GRAIN, particle_at(up, zero, 1.0, rho, sk));
+  return wall_sums(near, 0);
 }
 const double G_DOWN[3] = {0.0, 0.0, -9.81};
 }    // namespace

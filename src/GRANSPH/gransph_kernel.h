@@ -26,33 +26,36 @@ struct WendlandC2 {
 
   KOKKOS_INLINE_FUNCTION double cutsq() const { return 4.0 * h * h; }
 
-  // W(r, h) from r^2
-  KOKKOS_INLINE_FUNCTION double w(double rsq) const
+  // q = r / h from r^2: the one sqrt of a pair
+  KOKKOS_INLINE_FUNCTION double q(double rsq) const { return sqrt(rsq) * inv_h; }
+
+  // W at q < 2
+  KOKKOS_INLINE_FUNCTION double w_inside(double q) const
   {
-    const double q = sqrt(rsq) * inv_h;
-    if (q >= 2.0) return 0.0;
     const double t = 1.0 - 0.5 * q;
     return w_norm * t * t * t * t * (2.0 * q + 1.0);
   }
 
-  // F with grad_i W(x_i - x_j) = F * (x_i - x_j); dW/dq = -5 q (1 - q/2)^3 alpha_d,
-  // so F = -5 alpha_d (1 - q/2)^3 / h^2 and no division by r is needed.
-  KOKKOS_INLINE_FUNCTION double grad_factor(double rsq) const
+  // F with grad_i W(x_i - x_j) = F * (x_i - x_j), at q < 2; dW/dq = -5 q (1 - q/2)^3
+  // alpha_d, so F = -5 alpha_d (1 - q/2)^3 / h^2 and no division by r is needed.
+  KOKKOS_INLINE_FUNCTION double grad_factor_inside(double q) const
   {
-    const double q = sqrt(rsq) * inv_h;
-    if (q >= 2.0) return 0.0;
     const double t = 1.0 - 0.5 * q;
     return grad_norm * t * t * t;
   }
 
-  // W and F (as grad_factor) from one sqrt, for r < 2h
-  KOKKOS_INLINE_FUNCTION void w_and_grad_factor(double rsq, double &w, double &f) const
+  // W(r, h) from r^2
+  KOKKOS_INLINE_FUNCTION double w(double rsq) const
   {
-    const double q = sqrt(rsq) * inv_h;
-    const double t = 1.0 - 0.5 * q;
-    const double t3 = t * t * t;
-    w = w_norm * t3 * t * (2.0 * q + 1.0);
-    f = grad_norm * t3;
+    const double qr = q(rsq);
+    return qr < 2.0 ? w_inside(qr) : 0.0;
+  }
+
+  // F as above from r^2, zero outside the support
+  KOKKOS_INLINE_FUNCTION double grad_factor(double rsq) const
+  {
+    const double qr = q(rsq);
+    return qr < 2.0 ? grad_factor_inside(qr) : 0.0;
   }
 };
 

@@ -51,15 +51,16 @@ namespace GRANSPHCompat {
 #endif
   }
 
-  // a pair style's half neighbour list without Newton's third law across ranks
-  inline void request_half_list_newton_off(Neighbor *neighbor, Pair *pair, int instance_me)
+  // a pair style's full neighbour list
+  inline void request_full_list(Neighbor *neighbor, Pair *pair, int instance_me)
   {
 #if GRANSPH_LAMMPS_NEW_API
-    neighbor->add_request(pair, NeighConst::REQ_NEWTON_OFF);
+    neighbor->add_request(pair, NeighConst::REQ_FULL);
     (void) instance_me;
 #else
     const int irequest = neighbor->request(pair, instance_me);
-    neighbor->requests[irequest]->newton = 2;
+    neighbor->requests[irequest]->half = 0;
+    neighbor->requests[irequest]->full = 1;
 #endif
   }
 

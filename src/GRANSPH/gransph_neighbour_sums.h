@@ -1,20 +1,25 @@
 /* -*- c++ -*- ----------------------------------------------------------
-   GRANSPH: the neighbour sums of sph/granular, written once for the plain and
-   the Kokkos pair styles, over the pair terms of gransph_pair_terms.h.
+   GRANSPH: the neighbour sums of sph/granular over a full neighbour list,
+   written once for the plain and the Kokkos pair styles, over the pair terms
+   of gransph_pair_terms.h. Each sum runs over the neighbours of one particle
+   and writes to that particle only: no atomics, no scatter.
    `Particles` is an accessor with
 
      int    num_neighbours(int i), neighbour(int i, int k)  (masked)
-     const GRANSPH::PairParticle &particle(int i)
+     const GRANSPH::PairParticle &particle(int i)  (every atom in the lists: one
+                          that is neither grain nor dummy massless, so that its
+                          values are finite)
      bool   granular(int i), wall(int i)
      GRANSPH::WendlandC2 kernel; GRANSPH::Viscosity visc
      bool   wall_normal  (dummy neighbours enter drho and grad_v along the wall
                           normal only: WallVelocitySums)
      bool   shape_sums   (sum the shape matrix, which only the corrected gradient uses)
 
-   Over a full neighbour list (the Kokkos styles: no atomics) each loop runs
-   over one particle i and writes only to i. Over a half list with newton off
-   (the plain style: each pair once, a pair with a ghost on both ranks) a loop
-   adds each pair to both particles, to j only if j is owned.
+   Vectorised on the host: each loop over the neighbours is an `omp simd` reduction
+   into named scalars, its body free of branches (a neighbour outside the support or of
+   no role adds zeros) and of local structs or arrays (GCC turns an addressable local of
+   a simd loop into an array per lane, and then does not vectorise the loop). The
+   options a run does not use are template arguments, so that their sums cost nothing.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_NEIGHBOUR_SUMS_H
@@ -23,49 +28,16 @@
 #include "gransph_kernel.h"
 #include "gransph_pair_terms.h"
 
+// `omp simd` with a sum over the named variables (honoured with -fopenmp or -fopenmp-simd;
+// device compilers go without)
+#if defined(__CUDACC__) || defined(__HIPCC__)
+#define GRANSPH_SIMD_SUM(...)
+#else
+#define GRANSPH_PRAGMA(text) _Pragma(#text)
+#define GRANSPH_SIMD_SUM(...) GRANSPH_PRAGMA(omp simd reduction(+ : __VA_ARGS__))
+#endif
+
 namespace GRANSPH {
-
-// 0.5 x_ij (x) F_ij: with a full list each pair is visited from both sides.
-KOKKOS_INLINE_FUNCTION void add_pair_virial(double *vir, const double *dx, const double *fij)
-{
-  vir[0] += 0.5 * dx[0] * fij[0];
-  vir[1] += 0.5 * dx[1] * fij[1];
-  vir[2] += 0.5 * dx[2] * fij[2];
-  vir[3] += 0.5 * dx[0] * fij[1];
-  vir[4] += 0.5 * dx[0] * fij[2];
-  vir[5] += 0.5 * dx[1] * fij[2];
-}
-
-// What a pair i-j inside the kernel support shares with every term:
-// dx = x_i - x_j, dv = v_i - v_j, W_ij, grad_i W_ij and the viscosity Pi_ij (eq. 7).
-struct PairGeometry {
-  double dx[3], dv[3], gradw[3];
-  double w, visc;
-
-  KOKKOS_INLINE_FUNCTION PairTerms terms(const PairParticle &pi, const PairParticle &pj) const
-  {
-    return PairTerms::make(pi, pj, dx, dv, gradw, w, visc);
-  }
-};
-
-// Fills g for the pair pi-pj, with the viscosity if `viscous`; false if pj is outside
-// the support. A neighbour on top of pi (r = 0) has grad W = 0 and Pi = 0.
-template <class Particles>
-KOKKOS_INLINE_FUNCTION bool pair_geometry(const Particles &p, const PairParticle &pi,
-                                          const PairParticle &pj, bool viscous, PairGeometry &g)
-{
-  for (int a = 0; a < 3; ++a) g.dx[a] = pi.x[a] - pj.x[a];
-  const double rsq = g.dx[0] * g.dx[0] + g.dx[1] * g.dx[1] + g.dx[2] * g.dx[2];
-  if (rsq >= p.kernel.cutsq()) return false;
-  double fw;
-  p.kernel.w_and_grad_factor(rsq, g.w, fw);
-  for (int a = 0; a < 3; ++a) {
-    g.dv[a] = pi.v[a] - pj.v[a];
-    g.gradw[a] = fw * g.dx[a];
-  }
-  g.visc = viscous ? monaghan_viscosity(g.dx, g.dv, rsq, p.kernel.h, p.visc, pi, pj) : 0.0;
-  return true;
-}
 
 // Two particles closer than a millionth of h lie on one place: two create_atoms commands
 // filled one lattice site. Such a pair has no kernel gradient, so nothing keeps them apart.
@@ -95,150 +67,276 @@ KOKKOS_INLINE_FUNCTION bool has_coincident_neighbour(const Particles &p, int i)
   return false;
 }
 
-// Rates of granular particle i (eqs. 6, 7, 34, 35); vir (may be null) gets its virial.
+// Rates of granular particle i (eqs. 6, 7, 34, 35) over its grain and dummy neighbours;
+// with VIRIAL, vir gets its virial 0.5 x_ij (x) F_ij (each pair is visited from both
+// sides), in LAMMPS' order xx yy zz xy xz yz. A neighbour on top of i (r = 0) has
+// grad W = 0 and Pi = 0.
+template <bool WALL_NORMAL, bool SHAPE, bool VIRIAL, class Particles>
+KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir)
+{
+  const PairParticle &pi = p.particle(i);
+  const double xi = pi.x[0], yi = pi.x[1], zi = pi.x[2];
+  const double vxi = pi.v[0], vyi = pi.v[1], vzi = pi.v[2];
+  const double rho_i = pi.rho, c_i = pi.c, inv_rho_i = pi.inv_rho, m_i = pi.mass;
+  const double sxx_i = pi.sigma.xx, syy_i = pi.sigma.yy, szz_i = pi.sigma.zz;
+  const double sxy_i = pi.sigma.xy, sxz_i = pi.sigma.xz, syz_i = pi.sigma.yz;
+  // copies of the settings: read in the loop without a condition on a lane
+  const WendlandC2 kernel = p.kernel;
+  const Viscosity viscosity = p.visc;
+  const double cutsq = kernel.cutsq();
+
+  double drho = 0.0, ax = 0.0, ay = 0.0, az = 0.0;
+  // grad_v[a][b] = dv_a/dx_b
+  double lxx = 0.0, lxy = 0.0, lxz = 0.0, lyx = 0.0, lyy = 0.0, lyz = 0.0, lzx = 0.0,
+         lzy = 0.0, lzz = 0.0;
+  double kxx = 0.0, kyy = 0.0, kzz = 0.0, kxy = 0.0, kxz = 0.0, kyz = 0.0;    // shape
+  double w_sum = 0.0, visc_w = 0.0;
+  // WallVelocitySums: drho (d..), grad_v (g..), offset (o.)
+  double dxx = 0.0, dxy = 0.0, dxz = 0.0, dyx = 0.0, dyy = 0.0, dyz = 0.0, dzx = 0.0,
+         dzy = 0.0, dzz = 0.0;
+  double gxx = 0.0, gxy = 0.0, gxz = 0.0, gyx = 0.0, gyy = 0.0, gyz = 0.0, gzx = 0.0,
+         gzy = 0.0, gzz = 0.0;
+  double ox = 0.0, oy = 0.0, oz = 0.0;
+  double v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0, v4 = 0.0, v5 = 0.0;
+
+  const int n = p.num_neighbours(i);
+  GRANSPH_SIMD_SUM(drho, ax, ay, az, lxx, lxy, lxz, lyx, lyy, lyz, lzx, lzy, lzz, kxx, kyy,
+                   kzz, kxy, kxz, kyz, w_sum, visc_w, dxx, dxy, dxz, dyx, dyy, dyz, dzx, dzy,
+                   dzz, gxx, gxy, gxz, gyx, gyy, gyz, gzx, gzy, gzz, ox, oy, oz, v0, v1, v2,
+                   v3, v4, v5)
+  for (int k = 0; k < n; ++k) {
+    const int j = p.neighbour(i, k);
+    const PairParticle &pj = p.particle(j);
+    const bool grain = p.granular(j), dummy = p.wall(j);
+    const double rx = xi - pj.x[0], ry = yi - pj.x[1], rz = zi - pj.x[2];
+    const double rsq = rx * rx + ry * ry + rz * rz;
+    const bool inside = (grain || dummy) && rsq < cutsq;
+    const double q = kernel.q(rsq);
+    const double w = inside ? kernel.w_inside(q) : 0.0;
+    const double fw = inside ? kernel.grad_factor_inside(q) : 0.0;
+    const double gwx = fw * rx, gwy = fw * ry, gwz = fw * rz;    // grad_i W
+    const double dvx = vxi - pj.v[0], dvy = vyi - pj.v[1], dvz = vzi - pj.v[2];
+    const double pi_ij = monaghan_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, kernel.h,
+                                            viscosity, 0.5 * (c_i + pj.c), 0.5 * (rho_i + pj.rho));
+    const double visc = grain || viscosity.walls ? pi_ij : 0.0;
+
+    // eq. 6b: the acceleration
+    const double inv_rho_ij = inv_rho_i * pj.inv_rho;
+    const double sxx = sxx_i + pj.sigma.xx, syy = syy_i + pj.sigma.yy, szz = szz_i + pj.sigma.zz;
+    const double sxy = sxy_i + pj.sigma.xy, sxz = sxz_i + pj.sigma.xz, syz = syz_i + pj.sigma.yz;
+    const double tx = stress_gradient(sxx, sxy, sxz, inv_rho_ij, visc, gwx, gwy, gwz, gwx);
+    const double ty = stress_gradient(sxy, syy, syz, inv_rho_ij, visc, gwx, gwy, gwz, gwy);
+    const double tz = stress_gradient(sxz, syz, szz, inv_rho_ij, visc, gwx, gwy, gwz, gwz);
+    const double m = pj.mass, volume = m * pj.inv_rho;
+    ax += m * tx;
+    ay += m * ty;
+    az += m * tz;
+
+    // eq. 6a and the velocity gradient, v_ji (x) grad_i W = -dv (x) grad_i W weighted by
+    // the volume m/rho; a dummy's share goes to the wall sums under WALL_NORMAL
+    const bool to_wall = WALL_NORMAL && dummy;
+    const double m_r = to_wall ? 0.0 : m, s_r = to_wall ? 0.0 : -volume;
+    drho += m_r * (dvx * gwx + dvy * gwy + dvz * gwz);
+    lxx += s_r * dvx * gwx;
+    lxy += s_r * dvx * gwy;
+    lxz += s_r * dvx * gwz;
+    lyx += s_r * dvy * gwx;
+    lyy += s_r * dvy * gwy;
+    lyz += s_r * dvy * gwz;
+    lzx += s_r * dvz * gwx;
+    lzy += s_r * dvz * gwy;
+    lzz += s_r * dvz * gwz;
+    if (SHAPE) {    // x_ji (x) grad_i W = -dx (x) grad_i W, symmetric (grad W is along dx)
+      kxx += -volume * rx * gwx;
+      kyy += -volume * ry * gwy;
+      kzz += -volume * rz * gwz;
+      kxy += -volume * rx * gwy;
+      kxz += -volume * rx * gwz;
+      kyz += -volume * ry * gwz;
+    }
+    // the kernel-weighted sums of the viscous-pressure diagnostic, rho_i rho_j Pi_ij / 2
+    w_sum += volume * w;
+    visc_w += volume * w * (0.5 * rho_i * pj.rho * visc);
+    if (WALL_NORMAL) {
+      const double m_w = to_wall ? m : 0.0, s_w = to_wall ? -volume : 0.0;
+      dxx += m_w * dvx * gwx;
+      dxy += m_w * dvx * gwy;
+      dxz += m_w * dvx * gwz;
+      dyx += m_w * dvy * gwx;
+      dyy += m_w * dvy * gwy;
+      dyz += m_w * dvy * gwz;
+      dzx += m_w * dvz * gwx;
+      dzy += m_w * dvz * gwy;
+      dzz += m_w * dvz * gwz;
+      gxx += s_w * dvx * gwx;
+      gxy += s_w * dvx * gwy;
+      gxz += s_w * dvx * gwz;
+      gyx += s_w * dvy * gwx;
+      gyy += s_w * dvy * gwy;
+      gyz += s_w * dvy * gwz;
+      gzx += s_w * dvz * gwx;
+      gzy += s_w * dvz * gwy;
+      gzz += s_w * dvz * gwz;
+      const double vw = to_wall ? volume * w : 0.0;
+      ox += vw * rx;
+      oy += vw * ry;
+      oz += vw * rz;
+    }
+    if (VIRIAL) {    // F_ij = m_i m_j t
+      const double mm = 0.5 * m_i * m;
+      v0 += mm * rx * tx;
+      v1 += mm * ry * ty;
+      v2 += mm * rz * tz;
+      v3 += mm * rx * ty;
+      v4 += mm * rx * tz;
+      v5 += mm * ry * tz;
+    }
+  }
+
+  ParticleRates r{drho,
+                  {ax, ay, az},
+                  {{lxx, lxy, lxz}, {lyx, lyy, lyz}, {lzx, lzy, lzz}},
+                  {kxx, kyy, kzz, kxy, kxz, kyz},
+                  w_sum,
+                  visc_w};
+  if (WALL_NORMAL) {
+    const WallVelocitySums walls{{{dxx, dxy, dxz}, {dyx, dyy, dyz}, {dzx, dzy, dzz}},
+                                 {{gxx, gxy, gxz}, {gyx, gyy, gyz}, {gzx, gzy, gzz}},
+                                 {ox, oy, oz}};
+    walls.add_along_normal(r);
+  }
+  if (VIRIAL) {
+    vir[0] += v0;
+    vir[1] += v1;
+    vir[2] += v2;
+    vir[3] += v3;
+    vir[4] += v4;
+    vir[5] += v5;
+  }
+  return r;
+}
+
+// granular_rates with the options of p, and the virial if vir is not null
 template <class Particles>
 KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir)
 {
-  ParticleRates r = ParticleRates::zero();
-  WallVelocitySums walls = WallVelocitySums::zero();
-  const PairParticle pi = p.particle(i);
-  const int n = p.num_neighbours(i);
-  for (int k = 0; k < n; ++k) {
-    const int j = p.neighbour(i, k);
-    if (!p.granular(j) && !p.wall(j)) continue;
-    const PairParticle &pj = p.particle(j);
-    PairGeometry g;
-    if (!pair_geometry(p, pi, pj, p.granular(j) || p.visc.walls, g)) continue;
-    const PairTerms t = g.terms(pi, pj);
-    if (p.wall_normal && p.wall(j)) {
-      walls.add(t, pj, 1.0);
-      r.add_force_and_weights(t, pj, 1.0, p.shape_sums);
-    } else
-      r.add(t, pj, 1.0, p.shape_sums);
-    if (vir) {
-      const double mm = pi.mass * pj.mass;
-      const double fij[3] = {mm * t.tg[0], mm * t.tg[1], mm * t.tg[2]};
-      add_pair_virial(vir, g.dx, fij);
-    }
+  if (p.wall_normal) {
+    if (p.shape_sums)
+      return vir ? granular_rates<true, true, true>(p, i, vir)
+                 : granular_rates<true, true, false>(p, i, vir);
+    return vir ? granular_rates<true, false, true>(p, i, vir)
+               : granular_rates<true, false, false>(p, i, vir);
   }
-  if (p.wall_normal) walls.add_along_normal(r);
-  return r;
+  if (p.shape_sums)
+    return vir ? granular_rates<false, true, true>(p, i, vir)
+               : granular_rates<false, true, false>(p, i, vir);
+  return vir ? granular_rates<false, false, true>(p, i, vir)
+             : granular_rates<false, false, false>(p, i, vir);
 }
 
 // The sums of eq. 8 for dummy particle d over its granular neighbours.
 template <class Particles> KOKKOS_INLINE_FUNCTION WallSums wall_sums(const Particles &p, int d)
 {
-  WallSums sums = WallSums::zero();
-  const PairParticle pd = p.particle(d);
+  const PairParticle &pd = p.particle(d);
+  const double xd = pd.x[0], yd = pd.x[1], zd = pd.x[2];
+  const WendlandC2 kernel = p.kernel;
+  const double cutsq = kernel.cutsq();
+  double sxx = 0.0, syy = 0.0, szz = 0.0, sxy = 0.0, sxz = 0.0, syz = 0.0;
+  double rho_rx = 0.0, rho_ry = 0.0, rho_rz = 0.0, w_sum = 0.0;
   const int n = p.num_neighbours(d);
+  GRANSPH_SIMD_SUM(sxx, syy, szz, sxy, sxz, syz, rho_rx, rho_ry, rho_rz, w_sum)
   for (int k = 0; k < n; ++k) {
     const int j = p.neighbour(d, k);
-    if (!p.granular(j)) continue;
     const PairParticle &pk = p.particle(j);
-    const double r_dk[3] = {pd.x[0] - pk.x[0], pd.x[1] - pk.x[1], pd.x[2] - pk.x[2]};
-    const double rsq = r_dk[0] * r_dk[0] + r_dk[1] * r_dk[1] + r_dk[2] * r_dk[2];
-    if (rsq >= p.kernel.cutsq()) continue;
-    sums.add(pk.sigma, pk.rho, r_dk, p.kernel.w(rsq));
+    // r_dk = x_d - x_k
+    const double rx = xd - pk.x[0], ry = yd - pk.x[1], rz = zd - pk.x[2];
+    const double rsq = rx * rx + ry * ry + rz * rz;
+    const double w_in = kernel.w_inside(kernel.q(rsq));
+    const double w = p.granular(j) && rsq < cutsq ? w_in : 0.0;
+    sxx += w * pk.sigma.xx;
+    syy += w * pk.sigma.yy;
+    szz += w * pk.sigma.zz;
+    sxy += w * pk.sigma.xy;
+    sxz += w * pk.sigma.xz;
+    syz += w * pk.sigma.yz;
+    rho_rx += pk.rho * rx * w;
+    rho_ry += pk.rho * ry * w;
+    rho_rz += pk.rho * rz * w;
+    w_sum += w;
   }
-  return sums;
+  return {{sxx, syy, szz, sxy, sxz, syz}, {rho_rx, rho_ry, rho_rz}, w_sum};
 }
 
-// Force of the granular neighbours on dummy particle d (eq. 9); vir as above.
+// Force of the granular neighbours on dummy particle d (eq. 9), with its stress of eq. 8
+// in place; with VIRIAL, vir as in granular_rates.
+template <bool VIRIAL, class Particles>
+KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force, double *vir)
+{
+  const PairParticle &pd = p.particle(d);
+  const double xd = pd.x[0], yd = pd.x[1], zd = pd.x[2];
+  const double vxd = pd.v[0], vyd = pd.v[1], vzd = pd.v[2];
+  const double rho_d = pd.rho, c_d = pd.c, inv_rho_d = pd.inv_rho, m_d = pd.mass;
+  const double sxx_d = pd.sigma.xx, syy_d = pd.sigma.yy, szz_d = pd.sigma.zz;
+  const double sxy_d = pd.sigma.xy, sxz_d = pd.sigma.xz, syz_d = pd.sigma.yz;
+  const WendlandC2 kernel = p.kernel;
+  const Viscosity viscosity = p.visc;
+  const double cutsq = kernel.cutsq();
+  double fx = 0.0, fy = 0.0, fz = 0.0;
+  double v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0, v4 = 0.0, v5 = 0.0;
+  const int n = p.num_neighbours(d);
+  GRANSPH_SIMD_SUM(fx, fy, fz, v0, v1, v2, v3, v4, v5)
+  for (int k = 0; k < n; ++k) {
+    const int j = p.neighbour(d, k);
+    const PairParticle &pj = p.particle(j);
+    const double rx = xd - pj.x[0], ry = yd - pj.x[1], rz = zd - pj.x[2];
+    const double rsq = rx * rx + ry * ry + rz * rz;
+    const double fw_in = kernel.grad_factor_inside(kernel.q(rsq));
+    const double fw = p.granular(j) && rsq < cutsq ? fw_in : 0.0;
+    const double gwx = fw * rx, gwy = fw * ry, gwz = fw * rz;
+    const double dvx = vxd - pj.v[0], dvy = vyd - pj.v[1], dvz = vzd - pj.v[2];
+    const double pi_dj = monaghan_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, kernel.h,
+                                            viscosity, 0.5 * (c_d + pj.c), 0.5 * (rho_d + pj.rho));
+    const double visc = viscosity.walls ? pi_dj : 0.0;
+    const double inv_rho_ij = inv_rho_d * pj.inv_rho;
+    const double sxx = sxx_d + pj.sigma.xx, syy = syy_d + pj.sigma.yy, szz = szz_d + pj.sigma.zz;
+    const double sxy = sxy_d + pj.sigma.xy, sxz = sxz_d + pj.sigma.xz, syz = syz_d + pj.sigma.yz;
+    const double mm = m_d * pj.mass;
+    const double fdx = mm * stress_gradient(sxx, sxy, sxz, inv_rho_ij, visc, gwx, gwy, gwz, gwx);
+    const double fdy = mm * stress_gradient(sxy, syy, syz, inv_rho_ij, visc, gwx, gwy, gwz, gwy);
+    const double fdz = mm * stress_gradient(sxz, syz, szz, inv_rho_ij, visc, gwx, gwy, gwz, gwz);
+    fx += fdx;
+    fy += fdy;
+    fz += fdz;
+    if (VIRIAL) {
+      v0 += 0.5 * rx * fdx;
+      v1 += 0.5 * ry * fdy;
+      v2 += 0.5 * rz * fdz;
+      v3 += 0.5 * rx * fdy;
+      v4 += 0.5 * rx * fdz;
+      v5 += 0.5 * ry * fdz;
+    }
+  }
+  force[0] = fx;
+  force[1] = fy;
+  force[2] = fz;
+  if (VIRIAL) {
+    vir[0] += v0;
+    vir[1] += v1;
+    vir[2] += v2;
+    vir[3] += v3;
+    vir[4] += v4;
+    vir[5] += v5;
+  }
+}
+
+// wall_force, with the virial if vir is not null
 template <class Particles>
 KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force, double *vir)
 {
-  const PairParticle pd = p.particle(d);
-  for (int a = 0; a < 3; ++a) force[a] = 0.0;
-  const int n = p.num_neighbours(d);
-  for (int k = 0; k < n; ++k) {
-    const int j = p.neighbour(d, k);
-    if (!p.granular(j)) continue;
-    const PairParticle &pj = p.particle(j);
-    PairGeometry g;
-    if (!pair_geometry(p, pd, pj, p.visc.walls, g)) continue;
-    double tg[3];
-    stress_gradient(pd, pj, g.visc, g.gradw, tg);
-    const double mm = pd.mass * pj.mass;
-    const double fdj[3] = {mm * tg[0], mm * tg[1], mm * tg[2]};
-    for (int a = 0; a < 3; ++a) force[a] += fdj[a];
-    if (vir) add_pair_virial(vir, g.dx, fdj);
-  }
-}
-
-// Half list: the pairs of particle i added to the sums of eq. 8 (WallSums, indexed by
-// atom) of the dummy particles among i and its owned neighbours.
-template <class Particles, class SumsArray>
-KOKKOS_INLINE_FUNCTION void add_wall_sums(const Particles &p, int i, int nlocal,
-                                          const SumsArray &sums)
-{
-  const bool i_wall = p.wall(i);
-  if (!i_wall && !p.granular(i)) return;
-  const PairParticle pi = p.particle(i);
-  const int n = p.num_neighbours(i);
-  for (int k = 0; k < n; ++k) {
-    const int j = p.neighbour(i, k);
-    if (i_wall ? !p.granular(j) : !(p.wall(j) && j < nlocal)) continue;
-    const PairParticle &pj = p.particle(j);
-    const double r_ij[3] = {pi.x[0] - pj.x[0], pi.x[1] - pj.x[1], pi.x[2] - pj.x[2]};
-    const double rsq = r_ij[0] * r_ij[0] + r_ij[1] * r_ij[1] + r_ij[2] * r_ij[2];
-    if (rsq >= p.kernel.cutsq()) continue;
-    const double w = p.kernel.w(rsq);
-    if (i_wall)
-      sums[i].add(pj.sigma, pj.rho, r_ij, w);
-    else {
-      const double r_ji[3] = {-r_ij[0], -r_ij[1], -r_ij[2]};
-      sums[j].add(pi.sigma, pi.rho, r_ji, w);
-    }
-  }
-}
-
-// Half list: the pairs of particle i added to the rates (ParticleRates, indexed by
-// atom) of i and its owned neighbours: eqs. 6, 7, 34, 35 for granular particles, the
-// acceleration of eq. 9 for dummy ones. With p.wall_normal a grain's dummy neighbours
-// go to walls (WallVelocitySums, indexed by atom) instead of its drho and grad_v.
-// tally(i, j, f_ij, x_ij) gets each pair's force on i if want_virial.
-template <class Particles, class RatesArray, class WallsArray, class Tally>
-KOKKOS_INLINE_FUNCTION void add_pair_rates(const Particles &p, int i, int nlocal,
-                                           const RatesArray &rates, const WallsArray &walls,
-                                           bool want_virial, const Tally &tally)
-{
-  const bool i_granular = p.granular(i);
-  if (!i_granular && !p.wall(i)) return;
-  ParticleRates ri = ParticleRates::zero();
-  WallVelocitySums wi = WallVelocitySums::zero();
-  const PairParticle pi = p.particle(i);
-  const int n = p.num_neighbours(i);
-  for (int k = 0; k < n; ++k) {
-    const int j = p.neighbour(i, k);
-    if (!p.granular(j) && !(i_granular && p.wall(j))) continue;
-    const PairParticle &pj = p.particle(j);
-    PairGeometry g;
-    if (!pair_geometry(p, pi, pj, (i_granular && p.granular(j)) || p.visc.walls, g)) continue;
-    const PairTerms t = g.terms(pi, pj);
-    if (!i_granular)    // a dummy's rates serve its force only
-      ri.add_force(t, pj, 1.0);
-    else if (p.wall_normal && p.wall(j)) {
-      wi.add(t, pj, 1.0);
-      ri.add_force_and_weights(t, pj, 1.0, p.shape_sums);
-    } else
-      ri.add(t, pj, 1.0, p.shape_sums);
-    if (j < nlocal) {
-      if (!p.granular(j))
-        rates[j].add_force(t, pi, -1.0);
-      else if (p.wall_normal && !i_granular) {    // i is j's dummy neighbour
-        walls[j].add(t, pi, -1.0);
-        rates[j].add_force_and_weights(t, pi, -1.0, p.shape_sums);
-      } else
-        rates[j].add(t, pi, -1.0, p.shape_sums);
-    }
-    if (want_virial) {
-      const double mm = pi.mass * pj.mass;
-      const double fij[3] = {mm * t.tg[0], mm * t.tg[1], mm * t.tg[2]};
-      tally(i, j, fij, g.dx);
-    }
-  }
-  rates[i].add(ri);
-  if (p.wall_normal) walls[i].add(wi);
+  if (vir)
+    wall_force<true>(p, d, force, vir);
+  else
+    wall_force<false>(p, d, force, vir);
 }
 
 }    // namespace GRANSPH

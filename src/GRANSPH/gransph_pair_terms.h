@@ -1,8 +1,11 @@
 /* -*- c++ -*- ----------------------------------------------------------
-   GRANSPH: the pairwise SPH terms of the paper, one pair at a time.
-   Continuity (eq. 6a), momentum with the full stress and Monaghan viscosity
-   (eqs. 6b, 7), strain-rate and spin tensors (eqs. 34, 35), dummy-wall stress
-   extrapolation (eq. 8). Usable on host and device.
+   GRANSPH: the pairwise SPH terms of the paper and what a particle's sums
+   give. Per pair, in scalar arguments (the vectorised neighbour loops of
+   gransph_neighbour_sums.h call them): the Monaghan viscosity (eq. 7) and the
+   stress term of the momentum equation (eq. 6b). From the sums: the rates
+   (eqs. 6a, 6b, 34, 35, the corrected gradient), a wall's share taken along its
+   normal, and the dummy-wall stress extrapolation (eq. 8). Usable on host and
+   device.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_PAIR_TERMS_H
@@ -49,60 +52,32 @@ struct alignas(64) PairParticle {
   }
 };
 
-// Monaghan artificial viscosity Pi_ij, eq. 7, with phi = 0.1 h in the denominator.
-// dx = x_i - x_j, dv = v_i - v_j. Acts only between approaching particles (v.x < 0):
-// min(v.x, 0) = (v.x - |v.x|) / 2, exact and without a branch (which the neighbour
-// loops could not predict), gives Pi = 0 for the others. (-alpha c_ij phi_ij + beta phi_ij^2) / rho_ij with
-// phi_ij = h v.x / d, d = r^2 + 0.01 h^2, is taken over one denominator.
-KOKKOS_INLINE_FUNCTION double monaghan_viscosity(const double *dx, const double *dv, double rsq,
-                                                 double h, const Viscosity &visc,
-                                                 const PairParticle &pi, const PairParticle &pj)
+// Monaghan artificial viscosity Pi_ij, eq. 7, with phi = 0.1 h in the denominator, from
+// v.x = v_ij . x_ij, r^2 and the pair's mean sound speed c_ij and density rho_ij. Acts
+// only between approaching particles (v.x < 0): min(v.x, 0) = (v.x - |v.x|) / 2, exact
+// and without a branch, gives Pi = 0 for the others. (-alpha c_ij phi_ij + beta
+// phi_ij^2) / rho_ij with phi_ij = h v.x / d, d = r^2 + 0.01 h^2, is taken over one
+// denominator.
+KOKKOS_INLINE_FUNCTION double monaghan_viscosity(double vdotx, double rsq, double h,
+                                                 const Viscosity &visc, double c_ij, double rho_ij)
 {
-  const double vdotx = dv[0] * dx[0] + dv[1] * dx[1] + dv[2] * dx[2];
   const double hv = h * 0.5 * (vdotx - fabs(vdotx));
   const double d = rsq + 0.01 * h * h;
-  const double c_ij = 0.5 * (pi.c + pj.c);
-  const double rho_ij = 0.5 * (pi.rho + pj.rho);
   return hv * (visc.beta * hv - visc.alpha * c_ij * d) / (d * d * rho_ij);
 }
 
-// Eq. 6b's bracket applied to grad_i W, ((s_i + s_j)/(rho_i rho_j) - Pi_ij I) grad_i W:
-// the acceleration of i per unit mass of j. The bracket is symmetric and
-// grad_j W = -grad_i W, so j gets the opposite per unit mass of i. The viscous term is
-// a pressure (Monaghan 1992), hence the minus sign under our tension-positive stress;
-// the paper's "+ Pi" assumes the opposite sign of Pi.
-KOKKOS_INLINE_FUNCTION void stress_gradient(const PairParticle &pi, const PairParticle &pj,
-                                            double visc, const double *gradw, double *tg)
+// Component a of eq. 6b's bracket applied to grad_i W, ((s_i + s_j)/(rho_i rho_j) -
+// Pi_ij I) grad_i W: the acceleration of i per unit mass of j, from row a of s_i + s_j
+// (s_ax, s_ay, s_az), 1/(rho_i rho_j), Pi_ij, grad_i W and its component g_a. The
+// bracket is symmetric and grad_j W = -grad_i W, so j gets the opposite per unit mass of
+// i. The viscous term is a pressure (Monaghan 1992), hence the minus sign under our
+// tension-positive stress; the paper's "+ Pi" assumes the opposite sign of Pi.
+KOKKOS_INLINE_FUNCTION double stress_gradient(double s_ax, double s_ay, double s_az,
+                                              double inv_rho_ij, double visc, double gx,
+                                              double gy, double gz, double g_a)
 {
-  const Sym3 t = (pi.inv_rho * pj.inv_rho) * (pi.sigma + pj.sigma) - Sym3::iso(visc);
-  tg[0] = t.xx * gradw[0] + t.xy * gradw[1] + t.xz * gradw[2];
-  tg[1] = t.xy * gradw[0] + t.yy * gradw[1] + t.yz * gradw[2];
-  tg[2] = t.xz * gradw[0] + t.yz * gradw[1] + t.zz * gradw[2];
+  return inv_rho_ij * (s_ax * gx + s_ay * gy + s_az * gz) - visc * g_a;
 }
-
-// What pair i-j adds to the rates of either particle, computed once for both.
-struct PairTerms {
-  double dx[3], dv[3], gradw[3];    // x_i - x_j, v_i - v_j, grad_i W_ij
-  double dv_gradw;                  // v_ij . grad_i W_ij = v_ji . grad_j W_ji
-  double tg[3];                     // stress_gradient()
-  double w;                         // W_ij
-  double visc_pressure;             // rho_i rho_j Pi_ij / 2, the pressure Pi_ij stands for
-
-  KOKKOS_INLINE_FUNCTION static PairTerms make(const PairParticle &pi, const PairParticle &pj,
-                                               const double *dx, const double *dv,
-                                               const double *gradw, double w, double visc)
-  {
-    PairTerms t{{dx[0], dx[1], dx[2]},
-                {dv[0], dv[1], dv[2]},
-                {gradw[0], gradw[1], gradw[2]},
-                dv[0] * gradw[0] + dv[1] * gradw[1] + dv[2] * gradw[2],
-                {0.0, 0.0, 0.0},
-                w,
-                0.5 * pi.rho * pj.rho * visc};
-    stress_gradient(pi, pj, visc, gradw, t.tg);
-    return t;
-  }
-};
 
 // Inverse of a symmetric matrix; false (and inv untouched) if its determinant is
 // below det_min.
@@ -139,52 +114,6 @@ struct ParticleRates {
   {
     return {0.0, {0.0, 0.0, 0.0}, {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
             Sym3::zero(), 0.0, 0.0};
-  }
-
-  // the terms of a pair with `other`: side +1 for i, -1 for j (grad_j W = -grad_i W); the
-  // shape matrix only if with_shape (it serves the corrected gradient alone)
-  KOKKOS_INLINE_FUNCTION void add(const PairTerms &t, const PairParticle &other, double side,
-                                  bool with_shape)
-  {
-    drho += other.mass * t.dv_gradw;
-    // v_ji (x) grad_i W = v_ij (x) grad_j W = -dv (x) gradw, weighted by the volume m/rho
-    const double volume = other.mass * other.inv_rho, s = -volume;
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) grad_v[a][b] += s * t.dv[a] * t.gradw[b];
-    add_force_and_weights(t, other, side, with_shape);
-  }
-
-  // the acceleration, the shape matrix (x_ji (x) grad_i W = -dx (x) gradw, symmetric as
-  // gradw is parallel to dx) if with_shape, and the kernel-weighted sums
-  KOKKOS_INLINE_FUNCTION void add_force_and_weights(const PairTerms &t, const PairParticle &other,
-                                                    double side, bool with_shape)
-  {
-    add_force(t, other, side);
-    const double volume = other.mass * other.inv_rho, s = -volume;
-    if (with_shape)
-      shape = shape +
-          s * Sym3{t.dx[0] * t.gradw[0], t.dx[1] * t.gradw[1], t.dx[2] * t.gradw[2],
-                   t.dx[0] * t.gradw[1], t.dx[0] * t.gradw[2], t.dx[1] * t.gradw[2]};
-    w_sum += volume * t.w;
-    visc_w += volume * t.w * t.visc_pressure;
-  }
-
-  // the acceleration alone: all that the rates of a dummy particle serve (its force, eq. 9)
-  KOKKOS_INLINE_FUNCTION void add_force(const PairTerms &t, const PairParticle &other, double side)
-  {
-    for (int a = 0; a < 3; ++a) acc[a] += side * other.mass * t.tg[a];
-  }
-
-  KOKKOS_INLINE_FUNCTION void add(const ParticleRates &r)
-  {
-    drho += r.drho;
-    for (int a = 0; a < 3; ++a) {
-      acc[a] += r.acc[a];
-      for (int b = 0; b < 3; ++b) grad_v[a][b] += r.grad_v[a][b];
-    }
-    shape = shape + r.shape;
-    w_sum += r.w_sum;
-    visc_w += r.visc_w;
   }
 
   // Renormalised velocity gradient grad_v shape^-1 (Randles & Libersky 1996; Bonet &
@@ -249,30 +178,6 @@ struct WallVelocitySums {
             {0.0, 0.0, 0.0}};
   }
 
-  // the pair with dummy particle `dummy`, as ParticleRates::add: side +1 for i, -1 for j
-  KOKKOS_INLINE_FUNCTION void add(const PairTerms &t, const PairParticle &dummy, double side)
-  {
-    const double volume = dummy.mass * dummy.inv_rho;
-    for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < 3; ++b) {
-        drho[a][b] += dummy.mass * t.dv[a] * t.gradw[b];
-        grad_v[a][b] -= volume * t.dv[a] * t.gradw[b];
-      }
-      offset[a] += side * volume * t.w * t.dx[a];
-    }
-  }
-
-  KOKKOS_INLINE_FUNCTION void add(const WallVelocitySums &w)
-  {
-    for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < 3; ++b) {
-        drho[a][b] += w.drho[a][b];
-        grad_v[a][b] += w.grad_v[a][b];
-      }
-      offset[a] += w.offset[a];
-    }
-  }
-
   // adds the sums along the normal to the grain's rates
   KOKKOS_INLINE_FUNCTION void add_along_normal(ParticleRates &r) const
   {
@@ -319,13 +224,6 @@ struct WallSums {
 
   // whether any granular particle lies inside the support (W > 0 there)
   KOKKOS_INLINE_FUNCTION bool has_neighbours() const { return w > 0.0; }
-
-  KOKKOS_INLINE_FUNCTION void add(const Sym3 &sigma_k, double rho_k, const double *r_dk, double wdk)
-  {
-    sigma_w = sigma_w + wdk * sigma_k;
-    for (int a = 0; a < 3; ++a) rho_r_w[a] += rho_k * r_dk[a] * wdk;
-    w += wdk;
-  }
 
   // g_minus_a = g - a_d (see wall_gravity); a dummy particle without granular
   // neighbours is stress-free

@@ -2,10 +2,11 @@
    GRANSPH: pair_style sph/granular.
 
    Per evaluation: ghosts get fresh density and stress; owned dummy particles
-   get their stress by extrapolation (eq. 8) and pass it to their ghosts; then
-   the pairs give the rates of the granular particles (eqs. 6, 7, 34, 35) and
-   the forces the grains exert on the dummy particles (eq. 9). Over a half
-   neighbour list each pair is computed once for both of its particles.
+   get their stress by extrapolation (eq. 8), pass it to their ghosts and get
+   the force the grains exert on them (eq. 9); then the grains get their rates
+   (eqs. 6, 7, 34, 35). A full neighbour list: each particle sums over its own
+   neighbours into itself alone (gransph_neighbour_sums.h, shared with the
+   Kokkos twin), in loops the compiler vectorises.
 ------------------------------------------------------------------------- */
 
 #include "pair_sph_granular.h"
@@ -57,8 +58,7 @@ struct HostParticles {
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
     Pair(lmp), h(0.0), visc{DEFAULT_ALPHA, DEFAULT_BETA, false, GRANSPH::Viscosity::BULK, 0.0},
     corrected_gradient(0), wall_normal(0), wall_stress_mode(GRANSPH::WallSums::RATIO),
-    integrator(nullptr),
-    nmax(0), particles(nullptr), wall_sums(nullptr), rates(nullptr), wall_velocity(nullptr)
+    integrator(nullptr), nmax(0), particles(nullptr)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -68,9 +68,6 @@ PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
 PairSPHGranular::~PairSPHGranular()
 {
   memory->sfree(particles);
-  memory->sfree(wall_sums);
-  memory->sfree(rates);
-  memory->sfree(wall_velocity);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -86,19 +83,18 @@ void PairSPHGranular::compute(int eflag, int vflag)
   FixSPHIntegrate &fix = *integrator;
   const int nall = atom->nlocal + atom->nghost;
   fix.forward_comm_state();
-  // wall/gradient normal may be set by a pair_style issued again after the arrays grew
-  if (nall > nmax || (wall_normal && !wall_velocity)) grow(atom->nmax);
+  if (nall > nmax) grow(atom->nmax);
   pack_particles(0, nall);
   const HostParticles p{particles, list->firstneigh, list->numneigh, atom->mask, fix.groupbit,
                         fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), visc,
                         wall_normal != 0, corrected_gradient != 0};
   if (update->setupflag) check_no_coincident(p);
   if (fix.wallbit) {
-    wall_stresses(p);
+    walls(p);
     fix.forward_comm_state();
     pack_particles(atom->nlocal, nall);
   }
-  rates_and_forces(p);
+  grains(p);
 }
 
 // at the setup of a run: no two interacting particles on one place
@@ -140,17 +136,24 @@ void PairSPHGranular::stop_if_coincident(int i)
              (tagint) what[0], (tagint) what[1], what[2], what[3], what[4]);
 }
 
-// dummy-particle stresses, eq. 8, with the wall acceleration from the velocity
-// change since the last evaluation
-template <class Particles> void PairSPHGranular::wall_stresses(const Particles &p)
+// the virial of owned particle i, global and per atom as asked
+void PairSPHGranular::tally_virial(int i, const double *vir)
+{
+  if (vflag_global)
+    for (int k = 0; k < 6; ++k) virial[k] += vir[k];
+  if (vflag_atom)
+    for (int k = 0; k < 6; ++k) vatom[i][k] += vir[k];
+}
+
+// dummy-particle stresses (eq. 8), with the wall acceleration from the velocity change
+// since the last evaluation, and the grains' forces on them (eq. 9), which need a wall's
+// own new stress only
+template <class Particles> void PairSPHGranular::walls(const Particles &p)
 {
   FixSPHIntegrate &fix = *integrator;
-  const int nlocal = atom->nlocal, inum = list->inum;
+  const int inum = list->inum;
   const int *ilist = list->ilist;
-  for (int i = 0; i < nlocal; ++i) wall_sums[i] = GRANSPH::WallSums::zero();
-  for (int ii = 0; ii < inum; ++ii) GRANSPH::add_wall_sums(p, ilist[ii], nlocal, wall_sums);
-
-  double **v = atom->v;
+  double **v = atom->v, **f = atom->f;
   double g[3];
   fix.gravity_vector(g);
   const int stepping = !update->setupflag;
@@ -161,41 +164,38 @@ template <class Particles> void PairSPHGranular::wall_stresses(const Particles &
     double g_minus_a[3];
     GRANSPH::wall_gravity(g, v[d], &fix.start[d][FixSPHIntegrate::WALL_V], inv_dt, g_minus_a);
     if (stepping) fix.start[d][FixSPHIntegrate::STEPPED] = 1.0;
-    particles[d].sigma = wall_sums[d].stress(g_minus_a, wall_stress_mode);
+    const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
+    particles[d].sigma = sums.stress(g_minus_a, wall_stress_mode);
     particles[d].sigma.store(&fix.state[d][FixSPHIntegrate::SIGMA]);
+    if (!sums.has_neighbours()) continue;
+    double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, fd[3];
+    GRANSPH::wall_force(p, d, fd, vflag_either ? vir : nullptr);
+    for (int a = 0; a < 3; ++a) f[d][a] += fd[a] / force->ftm2v;
+    if (vflag_either) tally_virial(d, vir);
   }
 }
 
-// rates of the granular particles (eqs. 6, 7, 34, 35) and forces on the dummy
-// particles (eq. 9), summed over the pairs
-template <class Particles> void PairSPHGranular::rates_and_forces(const Particles &p)
+// rates of the granular particles (eqs. 6, 7, 34, 35)
+template <class Particles> void PairSPHGranular::grains(const Particles &p)
 {
   FixSPHIntegrate &fix = *integrator;
-  const int nlocal = atom->nlocal, inum = list->inum;
+  const int inum = list->inum;
   const int *ilist = list->ilist;
-  for (int i = 0; i < nlocal; ++i) rates[i] = GRANSPH::ParticleRates::zero();
-  if (wall_normal)
-    for (int i = 0; i < nlocal; ++i) wall_velocity[i] = GRANSPH::WallVelocitySums::zero();
-  auto tally = [&](int i, int j, const double *fij, const double *dx) {
-    ev_tally_xyz(i, j, nlocal, 0, 0.0, 0.0, fij[0], fij[1], fij[2], dx[0], dx[1], dx[2]);
-  };
-  for (int ii = 0; ii < inum; ++ii)
-    GRANSPH::add_pair_rates(p, ilist[ii], nlocal, rates, wall_velocity, vflag_either, tally);
-
   double **f = atom->f;
   const int dim = domain->dimension;
-  for (int i = 0; i < nlocal; ++i) {
-    if (!p.granular(i) && !p.wall(i)) continue;
-    GRANSPH::ParticleRates &r = rates[i];
-    for (int a = 0; a < 3; ++a) f[i][a] += particles[i].mass * r.acc[a] / force->ftm2v;
+  for (int ii = 0; ii < inum; ++ii) {
+    const int i = ilist[ii];
     if (!p.granular(i)) continue;
-    if (wall_normal) wall_velocity[i].add_along_normal(r);
+    double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, vflag_either ? vir : nullptr);
+    for (int a = 0; a < 3; ++a) f[i][a] += particles[i].mass * r.acc[a] / force->ftm2v;
     if (corrected_gradient) r.correct_gradient(dim);
     fix.state[i][FixSPHIntegrate::VISC_PRESSURE] = r.viscous_pressure();
     double *fix_rates = fix.rates[i];
     fix_rates[FixSPHIntegrate::DRHO] = r.drho;
     r.strain().store(&fix_rates[FixSPHIntegrate::STRAIN]);
     r.spin().store(&fix_rates[FixSPHIntegrate::SPIN]);
+    if (vflag_either) tally_virial(i, vir);
   }
 }
 
@@ -203,27 +203,21 @@ void PairSPHGranular::grow(int n)
 {
   nmax = n;
   memory->sfree(particles);
-  memory->sfree(wall_sums);
-  memory->sfree(rates);
-  memory->sfree(wall_velocity);
   particles = (PairParticle *) memory->smalloc(sizeof(PairParticle) * nmax, "pair:particles");
-  wall_sums =
-      (GRANSPH::WallSums *) memory->smalloc(sizeof(GRANSPH::WallSums) * nmax, "pair:wall_sums");
-  rates = (GRANSPH::ParticleRates *) memory->smalloc(sizeof(GRANSPH::ParticleRates) * nmax,
-                                                     "pair:rates");
-  wall_velocity = wall_normal ? (GRANSPH::WallVelocitySums *) memory->smalloc(
-                                    sizeof(GRANSPH::WallVelocitySums) * nmax, "pair:wall_velocity")
-                              : nullptr;
 }
 
-// the pair data of the granular and dummy particles among atoms [from, to)
+// the pair data of atoms [from, to); an atom that is neither grain nor dummy massless
+// (the neighbour sums read it, and add nothing from it)
 void PairSPHGranular::pack_particles(int from, int to)
 {
   const FixSPHIntegrate &fix = *integrator;
   const int sphbits = fix.groupbit | fix.wallbit;
   const double E = fix.material.E;
   for (int i = from; i < to; ++i) {
-    if (!(atom->mask[i] & sphbits)) continue;
+    if (!(atom->mask[i] & sphbits)) {
+      particles[i] = PairParticle::make(atom->x[i], atom->v[i], 0.0, 1.0, Sym3::zero(), 0.0);
+      continue;
+    }
     const double m = atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
     const double *state = fix.state[i];
     const double rho = state[FixSPHIntegrate::RHO];
@@ -330,9 +324,8 @@ void PairSPHGranular::init_style()
                "Pair style sph/granular needs a GRANSPH integrator (fix sph/elastoplastic or "
                "fix sph/phasechange)");
   visc.c0 = sqrt(integrator->material.bulk_modulus() / integrator->material.rho0);
-  // a half list without Newton's third law across ranks: no reverse communication of
-  // the rates (a pair with a ghost is computed on both ranks)
-  GRANSPHCompat::request_half_list_newton_off(neighbor, this, instance_me);
+  // a full list: each particle sums into itself alone, with no reverse communication
+  GRANSPHCompat::request_full_list(neighbor, this, instance_me);
 }
 
 double PairSPHGranular::init_one(int i, int j)

@@ -54,20 +54,17 @@ class PairSPHGranular : public Pair {
 
   void allocate();
   void stop_if_coincident(int i);
+  void tally_virial(int i, const double *vir);
 
  private:
-  // per atom, owned and ghost
   int nmax;
-  GRANSPH::PairParticle *particles;    // what the pairs read
-  GRANSPH::WallSums *wall_sums;        // of eq. 8, for the dummy particles
-  GRANSPH::ParticleRates *rates;       // summed over the pairs
-  GRANSPH::WallVelocitySums *wall_velocity;    // the same, of wall/gradient normal
+  GRANSPH::PairParticle *particles;    // what the pairs read, per atom, owned and ghost
 
   void grow(int n);
   void pack_particles(int from, int to);
   template <class Particles> void check_no_coincident(const Particles &p);
-  template <class Particles> void wall_stresses(const Particles &p);
-  template <class Particles> void rates_and_forces(const Particles &p);
+  template <class Particles> void walls(const Particles &p);
+  template <class Particles> void grains(const Particles &p);
 };
 
 }    // namespace LAMMPS_NS

@@ -132,7 +132,8 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   }
 }
 
-// the pair data of the granular and dummy particles among atoms [from, to)
+// the pair data of atoms [from, to); an atom that is neither grain nor dummy massless
+// (the neighbour sums read it, and add nothing from it)
 template <class DeviceType>
 void PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int from, int to)
 {
@@ -151,9 +152,12 @@ void PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int f
   const GRANSPH::Viscosity visc = this->visc;
   Kokkos::parallel_for(
       Kokkos::RangePolicy<DeviceType>(from, to), LAMMPS_LAMBDA(const int i) {
-        if (!(mask(i) & sphbits)) return;
         const double xi[3] = {x(i, 0), x(i, 1), x(i, 2)};
         const double vi[3] = {v(i, 0), v(i, 1), v(i, 2)};
+        if (!(mask(i) & sphbits)) {
+          particles(i) = GRANSPH::PairParticle::make(xi, vi, 0.0, 1.0, GRANSPH::Sym3::zero(), 0.0);
+          return;
+        }
         const GRANSPH::Sym3 sigma{state(i, FSI::SIGMA),     state(i, FSI::SIGMA + 1),
                                   state(i, FSI::SIGMA + 2), state(i, FSI::SIGMA + 3),
                                   state(i, FSI::SIGMA + 4), state(i, FSI::SIGMA + 5)};

@@ -1,17 +1,18 @@
 /* -*- c++ -*- ----------------------------------------------------------
-   GRANSPH: the force check of the /kk copies of LAMMPS' pair-style harness.
+   GRANSPH: the force check of our copies of LAMMPS' pair-style harness.
 
-   The /kk pair sums a particle's neighbours over a full list, the plain pair over a
-   half list: the same terms in another order. A force component that cancels to
+   The pair sums a particle's neighbours in SIMD lanes, whose grouping of the terms
+   follows the machine's vector width, and the /kk pair over a neighbour list of its
+   own order: the same terms in another order. A force component that cancels to
    round-off (a dummy particle's tangential force where the grains' shear stress is
-   nearly zero, 1e-26 against a normal force of 1e-4) then differs by O(1) relative to
+   nearly zero, 1e-20 against forces of order 1) then differs by O(1) relative to
    itself, which the harness' per-component relative error reports as a failure. Here
    each component is compared relative to the atom's whole reference force, which is
-   round-off where the plain and /kk pairs agree to round-off.
+   round-off where two sums of the same terms agree to round-off.
 ------------------------------------------------------------------------- */
 
-#ifndef GRANSPH_KK_FORCE_CHECK_H
-#define GRANSPH_KK_FORCE_CHECK_H
+#ifndef GRANSPH_FORCE_CHECK_H
+#define GRANSPH_FORCE_CHECK_H
 
 #include "error_stats.h"
 #include "gtest/gtest.h"
@@ -31,7 +32,7 @@
     EXPECT_PRED_FORMAT2(::testing::DoubleLE, err, eps);                                  \
   } while (0);
 
-// LAMMPS 2025+, whose kokkos_omp check calls EXPECT_FORCES of test_main.cpp: the same
+// LAMMPS 2025+, whose checks call EXPECT_FORCES of test_main.cpp: the same
 // check of every atom, each component relative to the atom's whole reference force
 template <class AtomT, class RefT>
 void expect_forces_relative(const std::string &name, AtomT *atom, const RefT &f_ref, double eps)
