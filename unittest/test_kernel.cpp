@@ -87,22 +87,25 @@ struct Neighbourhood {
   enum Role { GRAIN, DUMMY, OTHER };    // OTHER: neither (the pair styles pack it massless)
   std::vector<PairParticle> particles;
   std::vector<Role> roles;
+  std::vector<double> normals;    // 3 per particle: a dummy's own wall normal, or zeros
   WendlandC2 kernel;
   Viscosity visc{0.0, 0.0, false, Viscosity::BULK, 0.0};
   bool wall_normal = false, shape_sums = true;
 
   Neighbourhood(double h, int dim) : kernel(WendlandC2::make(h, dim)) {}
 
-  void add(Role role, const PairParticle &particle)
+  void add(Role role, const PairParticle &particle, const double *normal = nullptr)
   {
     particles.push_back(particle);
     roles.push_back(role);
+    for (int a = 0; a < 3; ++a) normals.push_back(normal ? normal[a] : 0.0);
   }
   int num_neighbours(int i) const { return i == 0 ? int(particles.size()) - 1 : 0; }
   int neighbour(int, int k) const { return k + 1; }
   const PairParticle &particle(int i) const { return particles[i]; }
   bool granular(int i) const { return roles[i] == GRAIN; }
   bool wall(int i) const { return roles[i] == DUMMY; }
+  double normal(int i, int a) const { return normals[3 * i + a]; }
 
   // the rates of grain 0, and its virial if vir is not null
   ParticleRates rates(double *vir = nullptr) const { return granular_rates(*this, 0, vir); }
@@ -295,8 +298,7 @@ TEST(PairTerms, OnlyNeighboursInsideTheSupportCount)
   near.add(Neighbourhood::DUMMY, particle_at(far, v, 1.0, 1000.0, Sym3::iso(-1e5)));
   const double close[3] = {0.0, 0.0, 0.005};
   PairParticle other = PairParticle::make(close, v, 0.0, 1.0, Sym3::zero(), 0.0);
-  near.particles.push_back(other);
-  near.roles.push_back(Neighbourhood::OTHER);
+  near.add(Neighbourhood::OTHER, other);
   const ParticleRates r = near.rates();
   EXPECT_EQ(r.drho, alone.drho);
   for (int a = 0; a < 3; ++a) EXPECT_EQ(r.acc[a], alone.acc[a]);
@@ -382,7 +384,8 @@ TEST(CorrectedGradient, ExactNextToAWallAndIn2D)
 // `s` spacings along x against their lattice and moving with velocity v: its rates from
 // the dummies, entered in full (ParticleRates::add) or along the wall normal only
 // (WallVelocitySums).
-ParticleRates rates_over_a_floor(double s, const double *v, bool along_normal)
+ParticleRates rates_over_a_floor(double s, const double *v, bool along_normal,
+                                 const double *own_normal = nullptr)
 {
   const double dx = 0.01, h = 0.012, rho = 2450.0, m = rho * dx * dx * dx;
   const double zero[3] = {0.0, 0.0, 0.0};
@@ -393,7 +396,7 @@ ParticleRates rates_over_a_floor(double s, const double *v, bool along_normal)
     for (int j = -4; j <= 4; ++j)
       for (int k = 0; k < 3; ++k) {
         const double xd[3] = {(i - s) * dx, j * dx, -(k + 1) * dx};
-        near.add(Neighbourhood::DUMMY, particle_at(xd, zero, m, rho));
+        near.add(Neighbourhood::DUMMY, particle_at(xd, zero, m, rho), own_normal);
       }
   return near.rates();
 }
@@ -428,6 +431,34 @@ TEST(WallGradient, AlongTheNormalTheFloorIsSmooth)
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b)
       EXPECT_NEAR(normal.grad_v[a][b], full.grad_v[a][b], 1e-12 * std::fabs(full.grad_v[0][2]));
+}
+
+// Dummies with their own normal (the floor's, +z) enter the rates along it exactly: a
+// grain sliding over the floor gets the shear rate and no spurious volumetric rate
+// wherever it is against the dummies' lattice, and approaching it the same normal rates
+// as with the normal from the dummies' centre.
+TEST(WallGradient, OwnNormalsAreExact)
+{
+  const double up[3] = {0.0, 0.0, 1.0};
+  const double slide[3] = {2.0, 0.0, 0.0}, approach[3] = {0.0, 0.0, -0.5};
+  for (double s : {0.0, 0.1, 0.2, 0.3, 0.4}) {
+    const ParticleRates own = rates_over_a_floor(s, slide, true, up);
+    const ParticleRates centre = rates_over_a_floor(s, slide, true);
+    EXPECT_EQ(own.grad_v[0][0], 0.0) << s;
+    EXPECT_EQ(own.drho, 0.0) << s;
+    EXPECT_NEAR(own.grad_v[0][2], centre.grad_v[0][2], 1e-3 * std::fabs(centre.grad_v[0][2])) << s;
+    const ParticleRates own_in = rates_over_a_floor(s, approach, true, up);
+    const ParticleRates centre_in = rates_over_a_floor(s, approach, true);
+    EXPECT_NEAR(own_in.drho, centre_in.drho, 1e-3 * std::fabs(centre_in.drho)) << s;
+    EXPECT_NEAR(own_in.grad_v[2][2], centre_in.grad_v[2][2], 1e-3 * std::fabs(centre_in.grad_v[2][2]));
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(own.acc[a], centre.acc[a]) << s;
+  }
+  // on a lattice site, where the centre's normal is +z too, the two agree to round-off
+  const ParticleRates own = rates_over_a_floor(0.0, slide, true, up);
+  const ParticleRates centre = rates_over_a_floor(0.0, slide, true);
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      EXPECT_NEAR(own.grad_v[a][b], centre.grad_v[a][b], 1e-12 * std::fabs(centre.grad_v[0][2]));
 }
 
 // Too few neighbours: the correction would divide by a near-singular matrix, so the

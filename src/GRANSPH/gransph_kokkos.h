@@ -41,12 +41,14 @@ template <class DeviceType> struct DeviceParticles {
   GRANSPH::WendlandC2 kernel;
   GRANSPH::Viscosity visc;
   bool wall_normal, shape_sums;
+  Kokkos::View<const double *, DeviceType> normals;    // 3 per atom, with wall_normal
 
   KOKKOS_INLINE_FUNCTION int num_neighbours(int i) const { return numneigh(i); }
   KOKKOS_INLINE_FUNCTION int neighbour(int i, int k) const { return neighbors(i, k) & NEIGHMASK; }
   KOKKOS_INLINE_FUNCTION const GRANSPH::PairParticle &particle(int i) const { return particles(i); }
   KOKKOS_INLINE_FUNCTION bool granular(int i) const { return mask(i) & granularbit; }
   KOKKOS_INLINE_FUNCTION bool wall(int i) const { return mask(i) & wallbit; }
+  KOKKOS_INLINE_FUNCTION double normal(int i, int a) const { return normals(3 * i + a); }
 };
 
 }    // namespace LAMMPS_NS

@@ -12,7 +12,9 @@
      bool   granular(int i), wall(int i)
      GRANSPH::WendlandC2 kernel; GRANSPH::Viscosity visc
      bool   wall_normal  (dummy neighbours enter drho and grad_v along the wall
-                          normal only: WallVelocitySums)
+                          normal only: their own, or WallVelocitySums')
+     double normal(int i, int a)  (with wall_normal: a dummy's own unit wall normal,
+                          or zeros for a dummy without one and for grains)
      bool   shape_sums   (sum the shape matrix, which only the corrected gradient uses)
 
    Vectorised on the host: each loop over the neighbours is an `omp simd` reduction
@@ -67,7 +69,10 @@ KOKKOS_INLINE_FUNCTION bool has_coincident_neighbour(const Particles &p, int i)
   return false;
 }
 
-// Rates of granular particle i (eqs. 6, 7, 34, 35) over its grain and dummy neighbours;
+// Rates of granular particle i (eqs. 6, 7, 34, 35) over its grain and dummy neighbours.
+// With WALL_NORMAL a dummy with its own normal n enters drho and grad_v through
+// (n . grad_i W) n; one without, through WallVelocitySums (the normal from the dummies'
+// weighted centre).
 // with VIRIAL, vir gets its virial 0.5 x_ij (x) F_ij (each pair is visited from both
 // sides), in LAMMPS' order xx yy zz xy xz yz. A neighbour on top of i (r = 0) has
 // grad W = 0 and Pi = 0.
@@ -133,19 +138,30 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     az += m * tz;
 
     // eq. 6a and the velocity gradient, v_ji (x) grad_i W = -dv (x) grad_i W weighted by
-    // the volume m/rho; a dummy's share goes to the wall sums under WALL_NORMAL
-    const bool to_wall = WALL_NORMAL && dummy;
+    // the volume m/rho; under WALL_NORMAL, of a dummy with its own normal n through
+    // (n . grad_i W) n, of one without through the wall sums
+    double ex = gwx, ey = gwy, ez = gwz;
+    bool to_wall = false;
+    if (WALL_NORMAL) {
+      const double nx = p.normal(j, 0), ny = p.normal(j, 1), nz = p.normal(j, 2);
+      const bool own = dummy && nx * nx + ny * ny + nz * nz > 0.0;
+      const double gn = nx * gwx + ny * gwy + nz * gwz;
+      ex = own ? gn * nx : gwx;
+      ey = own ? gn * ny : gwy;
+      ez = own ? gn * nz : gwz;
+      to_wall = dummy && !own;
+    }
     const double m_r = to_wall ? 0.0 : m, s_r = to_wall ? 0.0 : -volume;
-    drho += m_r * (dvx * gwx + dvy * gwy + dvz * gwz);
-    lxx += s_r * dvx * gwx;
-    lxy += s_r * dvx * gwy;
-    lxz += s_r * dvx * gwz;
-    lyx += s_r * dvy * gwx;
-    lyy += s_r * dvy * gwy;
-    lyz += s_r * dvy * gwz;
-    lzx += s_r * dvz * gwx;
-    lzy += s_r * dvz * gwy;
-    lzz += s_r * dvz * gwz;
+    drho += m_r * (dvx * ex + dvy * ey + dvz * ez);
+    lxx += s_r * dvx * ex;
+    lxy += s_r * dvx * ey;
+    lxz += s_r * dvx * ez;
+    lyx += s_r * dvy * ex;
+    lyy += s_r * dvy * ey;
+    lyz += s_r * dvy * ez;
+    lzx += s_r * dvz * ex;
+    lzy += s_r * dvz * ey;
+    lzz += s_r * dvz * ez;
     if (SHAPE) {    // x_ji (x) grad_i W = -dx (x) grad_i W, symmetric (grad W is along dx)
       kxx += -volume * rx * gwx;
       kyy += -volume * ry * gwy;

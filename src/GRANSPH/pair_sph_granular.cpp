@@ -43,12 +43,14 @@ struct HostParticles {
   GRANSPH::WendlandC2 kernel;
   GRANSPH::Viscosity visc;
   bool wall_normal, shape_sums;
+  const double *normals;    // 3 per atom, with wall_normal
 
   int num_neighbours(int i) const { return numneigh[i]; }
   int neighbour(int i, int k) const { return firstneigh[i][k] & NEIGHMASK; }
   const PairParticle &particle(int i) const { return particles[i]; }
   bool granular(int i) const { return mask[i] & granularbit; }
   bool wall(int i) const { return mask[i] & wallbit; }
+  double normal(int i, int a) const { return normals[3 * i + a]; }
 };
 
 }    // namespace
@@ -58,7 +60,7 @@ struct HostParticles {
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
     Pair(lmp), h(0.0), visc{DEFAULT_ALPHA, DEFAULT_BETA, false, GRANSPH::Viscosity::BULK, 0.0},
     corrected_gradient(0), wall_normal(0), wall_stress_mode(GRANSPH::WallSums::RATIO),
-    integrator(nullptr), nmax(0), particles(nullptr)
+    integrator(nullptr), nmax(0), particles(nullptr), normals(nullptr)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -68,6 +70,7 @@ PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
 PairSPHGranular::~PairSPHGranular()
 {
   memory->sfree(particles);
+  memory->sfree(normals);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -83,11 +86,13 @@ void PairSPHGranular::compute(int eflag, int vflag)
   FixSPHIntegrate &fix = *integrator;
   const int nall = atom->nlocal + atom->nghost;
   fix.forward_comm_state();
-  if (nall > nmax) grow(atom->nmax);
+  // wall/gradient normal may be set by a pair_style issued again after the arrays grew
+  if (nall > nmax || (wall_normal && !normals)) grow(atom->nmax);
   pack_particles(0, nall);
+  if (wall_normal) pack_wall_normals(normals, nall);
   const HostParticles p{particles, list->firstneigh, list->numneigh, atom->mask, fix.groupbit,
                         fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), visc,
-                        wall_normal != 0, corrected_gradient != 0};
+                        wall_normal != 0, corrected_gradient != 0, normals};
   if (update->setupflag) check_no_coincident(p);
   if (fix.wallbit) {
     walls(p);
@@ -203,7 +208,49 @@ void PairSPHGranular::grow(int n)
 {
   nmax = n;
   memory->sfree(particles);
+  memory->sfree(normals);
   particles = (PairParticle *) memory->smalloc(sizeof(PairParticle) * nmax, "pair:particles");
+  normals = wall_normal ? (double *) memory->smalloc(sizeof(double) * 3 * nmax, "pair:normals")
+                        : nullptr;
+}
+
+// The wall normals of atoms [0, n), 3 per atom into `out`: a dummy particle's own, from
+// the per-atom array wall_normal (fix property/atom d2_wall_normal 3 ghost yes), made a
+// unit vector; zeros for a dummy without one (or without the array) and for the others.
+void PairSPHGranular::pack_wall_normals(double *out, int n) const
+{
+  int flag = 0, cols = 0;
+  const int index = atom->find_custom("wall_normal", flag, cols);
+  double **custom = index >= 0 ? atom->darray[index] : nullptr;
+  const int *mask = atom->mask, wallbit = integrator->wallbit;
+  for (int i = 0; i < n; ++i) {
+    double len = 0.0;
+    if (custom && (mask[i] & wallbit))
+      len = sqrt(custom[i][0] * custom[i][0] + custom[i][1] * custom[i][1] +
+                 custom[i][2] * custom[i][2]);
+    for (int a = 0; a < 3; ++a) out[3 * i + a] = len > 0.0 ? custom[i][a] / len : 0.0;
+  }
+}
+
+// the per-atom array of wall normals, if there is one, must be what pack_wall_normals reads,
+// and reach the ghosts (the check cannot tell which fix property/atom made the array: it
+// finds one that communicates to ghosts)
+void PairSPHGranular::check_wall_normals() const
+{
+  int flag = 0, cols = 0;
+  if (atom->find_custom("wall_normal", flag, cols) < 0) return;
+  if (flag != 1 || cols != 3)
+    error->all(FLERR,
+               "Pair style sph/granular: the per-atom property wall_normal must be an array "
+               "of 3 floating-point values (fix property/atom d2_wall_normal 3 ghost yes)");
+  bool to_ghosts = false;
+  for (int i = 0; i < modify->nfix; ++i)
+    to_ghosts |= utils::strmatch(modify->fix[i]->style, "^property/atom") &&
+        modify->fix[i]->comm_border > 0;
+  if (!to_ghosts)
+    error->all(FLERR,
+               "Pair style sph/granular: the per-atom wall normals must reach ghost atoms: "
+               "fix property/atom d2_wall_normal 3 ghost yes");
 }
 
 // the pair data of atoms [from, to); an atom that is neither grain nor dummy massless
@@ -324,6 +371,7 @@ void PairSPHGranular::init_style()
                "Pair style sph/granular needs a GRANSPH integrator (fix sph/elastoplastic or "
                "fix sph/phasechange)");
   visc.c0 = sqrt(integrator->material.bulk_modulus() / integrator->material.rho0);
+  check_wall_normals();
   // a full list: each particle sums into itself alone, with no reverse communication
   GRANSPHCompat::request_full_list(neighbor, this, instance_me);
 }

@@ -55,10 +55,14 @@ class PairSPHGranular : public Pair {
   void allocate();
   void stop_if_coincident(int i);
   void tally_virial(int i, const double *vir);
+  void pack_wall_normals(double *out, int n) const;
+  void check_wall_normals() const;
 
  private:
   int nmax;
-  GRANSPH::PairParticle *particles;    // what the pairs read, per atom, owned and ghost
+  // what the pairs read, per atom, owned and ghost
+  GRANSPH::PairParticle *particles;
+  double *normals;    // with wall/gradient normal: pack_wall_normals()
 
   void grow(int n);
   void pack_particles(int from, int to);

@@ -101,6 +101,10 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   p.visc = visc;
   p.wall_normal = wall_normal != 0;
   p.shape_sums = corrected_gradient != 0;
+  if (wall_normal) {
+    update_wall_normals(nall);
+    p.normals = k_normals.template view<DeviceType>();
+  }
 
   if (update->setupflag) {    // no two interacting particles on one place
     auto ilist = k_list->d_ilist;
@@ -130,6 +134,19 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
     k_vatom.template modify<DeviceType>();
     k_vatom.sync_host();
   }
+}
+
+// The wall normals on the device: packed on the host when the atoms may have changed
+// places (a run's setup, a neighbour list build) or the arrays grew; a step between
+// builds copies nothing.
+template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::update_wall_normals(int nall)
+{
+  const bool grown = (int) k_normals.extent(0) < 3 * nall;
+  if (!grown && !update->setupflag && neighbor->ago != 0) return;
+  if (grown) k_normals = decltype(k_normals)("pair:normals", 3 * atom->nmax);
+  pack_wall_normals(k_normals.h_view.data(), nall);
+  k_normals.template modify<LMPHostType>();
+  k_normals.template sync<DeviceType>();
 }
 
 // the pair data of atoms [from, to); an atom that is neither grain nor dummy massless

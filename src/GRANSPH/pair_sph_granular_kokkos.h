@@ -39,6 +39,11 @@ template <class DeviceType> class PairSPHGranularKokkos : public PairSPHGranular
  private:
   GRANSPHCompat::tdual_virial k_vatom;
   Kokkos::View<GRANSPH::PairParticle *, DeviceType> d_particles;    // owned and ghost atoms
+  // with wall/gradient normal, 3 per atom (pack_wall_normals), copied to the device
+  // when atoms may have moved between ranks or in memory
+  Kokkos::DualView<double *, DeviceType> k_normals;
+
+  void update_wall_normals(int nall);
 };
 
 }    // namespace LAMMPS_NS

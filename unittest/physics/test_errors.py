@@ -34,6 +34,16 @@ CASES = [
     ("wall/gradient without a value", dict(pair_style="sph/granular 0.012 wall/gradient"),
      "wall/gradient needs a value"),
     ("pair_coeff with values", dict(pair_coeff="* * 1.0"), "expected I J only"),
+    ("wall normals of 2 columns", dict(pair_style="sph/granular 0.012 wall/gradient normal",
+                                       comm="comm_modify vel yes\n"
+                                            "fix normals all property/atom d2_wall_normal 2"),
+     "wall_normal must be an array of 3 floating-point values"),
+    ("wall normals as a vector", dict(comm="comm_modify vel yes\n"
+                                           "fix normals all property/atom d_wall_normal"),
+     "wall_normal must be an array of 3 floating-point values"),
+    ("wall normals without ghosts", dict(comm="comm_modify vel yes\n"
+                                              "fix normals all property/atom d2_wall_normal 3"),
+     "wall normals must reach ghost atoms"),
     ("no ghost velocities", dict(comm=""), "comm_modify vel yes"),
     ("no integrator fix", dict(fix=""), "needs a GRANSPH integrator"),
     ("missing material", dict(fix="fix sph sand sph/elastoplastic sand.gransph Nosuch"),

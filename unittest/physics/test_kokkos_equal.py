@@ -1,7 +1,7 @@
 """The /kk styles on 2 OpenMP threads reproduce the plain styles to round-off:
 positions, velocities, density and stress after a few hundred steps of the
 column collapse (elastoplastic, dummy walls; also with the walls' velocity along
-their normal only), the jet collision (phase change), and what compute
+their normal only, from the dummies' centre or their own normals), the jet collision (phase change), and what compute
 sph/stress/atom makes of the column's stress."""
 
 import os
@@ -16,6 +16,7 @@ EXAMPLES = os.path.join(gransph_run.TOP, "examples")
 CASES = [
     ("column_collapse", {"steps": 300}),
     ("column_collapse", {"steps": 300, "pair_options": "wall/gradient normal"}),
+    ("column_collapse", {"steps": 300, "pair_options": "wall/gradient normal", "normals": 1}),
     ("jet_collision", {"steps": 300, "dx": 0.016}),
 ]
 KOKKOS = ["-k", "on", "t", "2", "-sf", "kk"]
@@ -35,7 +36,8 @@ with tempfile.TemporaryDirectory() as tmp:
             ok = diff < 1e-10
             passed += ok
             failed += not ok
-            label = case + (" (" + variables["pair_options"] + ")" if "pair_options" in variables else "")
+            label = case + (" (" + variables["pair_options"] + ")" if "pair_options" in variables else "") + \
+                (" own normals" if variables.get("normals") else "")
             print(f"{label:16s} {name:12s} max |plain - kk| / max |plain| = {diff:.2e} {'ok' if ok else 'FAILED'}")
 print(f"{passed} passed, {failed} failed")
 sys.exit(1 if failed else 0)
