@@ -6,6 +6,7 @@
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
+#include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "fix_sph_integrate.h"
@@ -53,6 +54,15 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::init_style()
   PairSPHGranular::init_style();
   if (!dynamic_cast<SPHStateKokkos *>(integrator))
     error->all(FLERR, "Pair style sph/granular/kk needs the /kk variant of the GRANSPH integrator");
+  int flag = 0, cols = 0;
+  const bool ghosts = comm->nprocs > 1 || domain->xperiodic || domain->yperiodic ||
+      domain->zperiodic;
+  if (!GRANSPHCompat::kokkos_borders_carry_custom_arrays && ghosts &&
+      atom->find_custom("wall_normal", flag, cols) >= 0)
+    error->all(FLERR,
+               "Pair style sph/granular/kk: per-atom wall normals need LAMMPS newer than "
+               "29 Sep 2021 with ghost atoms (several ranks or periodic boundaries): this "
+               "version crashes passing them to ghosts under Kokkos; run the plain styles");
   // a full list: each particle writes only to itself, no atomics
   GRANSPHCompat::kokkos_full_list<DeviceType>(neighbor, this);
   atomKK->k_mass.template modify<LMPHostType>();
@@ -144,7 +154,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::update_wall_
   const bool grown = (int) k_normals.extent(0) < 3 * nall;
   if (!grown && !update->setupflag && neighbor->ago != 0) return;
   if (grown) k_normals = decltype(k_normals)("pair:normals", 3 * atom->nmax);
-  pack_wall_normals(k_normals.h_view.data(), nall);
+  pack_wall_normals(k_normals.view_host().data(), nall);
   k_normals.template modify<LMPHostType>();
   k_normals.template sync<DeviceType>();
 }

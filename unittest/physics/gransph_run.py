@@ -31,6 +31,9 @@ create_box 1 box
 """
 
 
+LAST_OUTPUT = ""    # what the last run() printed, stdout and stderr
+
+
 def run(input_file, variables=None, ranks=1, args=(), cwd=None):
     """Run input_file with -var name value pairs; return stdout, fail on error."""
     cmd = [LMP, "-in", os.path.abspath(input_file), "-log", "none", "-echo", "none"]
@@ -40,6 +43,8 @@ def run(input_file, variables=None, ranks=1, args=(), cwd=None):
     if ranks > 1:
         cmd = ["mpirun", "-np", str(ranks)] + cmd
     proc = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True)
+    global LAST_OUTPUT
+    LAST_OUTPUT = proc.stdout + proc.stderr
     if proc.returncode != 0 or "ERROR" in proc.stdout:
         sys.stderr.write(proc.stdout[-4000:] + proc.stderr[-4000:])
         raise RuntimeError(f"LAMMPS failed: {' '.join(cmd)}")

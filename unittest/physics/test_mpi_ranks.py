@@ -21,9 +21,23 @@ with tempfile.TemporaryDirectory() as tmp:
     for label, variables in VARIANTS:
         states = []
         for ranks in (1, 2):
-            gransph_run.run(example, {"steps": steps, "dump": 1, **variables}, ranks=ranks,
-                            args=args, cwd=tmp)
+            try:
+                out = gransph_run.run(example, {"steps": steps, "dump": 1, **variables},
+                                      ranks=ranks, args=args, cwd=tmp)
+            except RuntimeError as error:
+                # LAMMPS 29Sep2021's Kokkos crashes passing the normals to ghosts: the
+                # pair style must refuse them there, and only there
+                refusal = "per-atom wall normals need LAMMPS newer than 29 Sep 2021"
+                expected = "normals" in variables and args and "LAMMPS (29 Sep 2021" in out
+                ok = bool(expected) and refusal in gransph_run.LAST_OUTPUT
+                passed += ok
+                failed += not ok
+                print(f"{label:16s} 2 ranks refused by LAMMPS 29Sep2021 + Kokkos: "
+                      f"{'ok' if ok else 'FAILED: ' + str(error)}")
+                break
             states.append(gransph_run.read_dump(os.path.join(tmp, "column_collapse.dump")))
+        if len(states) < 2:
+            continue
         one, two = states
         assert np.max(np.abs(one["vz"])) > 1e-3, "the column did not move: nothing was compared"
         for name, diff in gransph_run.dump_differences(one, two).items():
