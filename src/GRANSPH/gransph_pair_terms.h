@@ -110,12 +110,6 @@ struct ParticleRates {
   // surface has about 0.5) a particle has too few neighbours for the correction.
   static constexpr double det_min = 0.1;
 
-  KOKKOS_INLINE_FUNCTION static ParticleRates zero()
-  {
-    return {0.0, {0.0, 0.0, 0.0}, {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
-            Sym3::zero(), 0.0, 0.0};
-  }
-
   // Renormalised velocity gradient grad_v shape^-1 (Randles & Libersky 1996; Bonet &
   // Lok 1999): exact for a linear velocity field also where the support is cut by a
   // free surface. A particle with too few neighbours keeps the plain gradient.
@@ -170,13 +164,6 @@ struct WallVelocitySums {
   double drho[3][3];      // sum_d m_d v_id (x) grad_i W_id
   double grad_v[3][3];    // sum_d m_d/rho_d v_di (x) grad_i W_id
   double offset[3];       // sum_d m_d/rho_d x_id W_id, along the wall normal
-
-  KOKKOS_INLINE_FUNCTION static WallVelocitySums zero()
-  {
-    return {{{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
-            {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
-            {0.0, 0.0, 0.0}};
-  }
 
   // adds the sums along the normal to the grain's rates
   KOKKOS_INLINE_FUNCTION void add_along_normal(ParticleRates &r) const

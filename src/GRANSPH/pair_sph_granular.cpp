@@ -87,9 +87,12 @@ void PairSPHGranular::compute(int eflag, int vflag)
   const int nall = atom->nlocal + atom->nghost;
   fix.forward_comm_state();
   // wall/gradient normal may be set by a pair_style issued again after the arrays grew
-  if (nall > nmax || (wall_normal && !normals)) grow(atom->nmax);
+  const bool grown = nall > nmax || (wall_normal && !normals);
+  if (grown) grow(atom->nmax);
   pack_particles(0, nall);
-  if (wall_normal) pack_wall_normals(normals, nall);
+  // the normals follow the atoms, which change places only at a run's setup or a list build
+  if (wall_normal && (grown || update->setupflag || neighbor->ago == 0))
+    pack_wall_normals(normals, nall);
   const HostParticles p{particles, list->firstneigh, list->numneigh, atom->mask, fix.groupbit,
                         fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), visc,
                         wall_normal != 0, corrected_gradient != 0, normals};

@@ -154,6 +154,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::update_wall_
   const bool grown = (int) k_normals.extent(0) < 3 * nall;
   if (!grown && !update->setupflag && neighbor->ago != 0) return;
   if (grown) k_normals = decltype(k_normals)("pair:normals", 3 * atom->nmax);
+  atomKK->sync(Host, MASK_MASK);    // pack_wall_normals reads the roles on the host
   pack_wall_normals(k_normals.view_host().data(), nall);
   k_normals.template modify<LMPHostType>();
   k_normals.template sync<DeviceType>();

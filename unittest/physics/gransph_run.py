@@ -113,6 +113,13 @@ def dump_differences(a, b):
     return out
 
 
+def check_same_state(check, label, a, b, tolerance):
+    """One check per dump column: the largest difference of a and b against the column's
+    largest value (dump_differences) within tolerance."""
+    for name, diff in dump_differences(a, b).items():
+        check(f"{label} {name}", diff < tolerance, f"max difference / max value = {diff:.2e}")
+
+
 def result_line(stdout):
     """The words of the line that starts with 'result:'."""
     for line in stdout.splitlines():

@@ -16,35 +16,27 @@ args = sys.argv[2:]    # e.g. -k on t 2 -sf kk
 VARIANTS = [("default", {}),
             ("own wall normals", {"pair_options": "wall/gradient normal", "normals": 1})]
 
-failed = passed = 0
+check = gransph_run.Checks()
 with tempfile.TemporaryDirectory() as tmp:
     for label, variables in VARIANTS:
         states = []
         for ranks in (1, 2):
             try:
-                out = gransph_run.run(example, {"steps": steps, "dump": 1, **variables},
-                                      ranks=ranks, args=args, cwd=tmp)
+                gransph_run.run(example, {"steps": steps, "dump": 1, **variables}, ranks=ranks,
+                                args=args, cwd=tmp)
             except RuntimeError as error:
                 # LAMMPS 29Sep2021's Kokkos crashes passing the normals to ghosts: the
                 # pair style must refuse them there, and only there
-                refusal = "per-atom wall normals need LAMMPS newer than 29 Sep 2021"
-                expected = "normals" in variables and args and "LAMMPS (29 Sep 2021" in out
-                ok = bool(expected) and refusal in gransph_run.LAST_OUTPUT
-                passed += ok
-                failed += not ok
-                print(f"{label:16s} 2 ranks refused by LAMMPS 29Sep2021 + Kokkos: "
-                      f"{'ok' if ok else 'FAILED: ' + str(error)}")
+                output = gransph_run.LAST_OUTPUT
+                expected = "normals" in variables and args and "LAMMPS (29 Sep 2021" in output
+                refused = "per-atom wall normals need LAMMPS newer than 29 Sep 2021" in output
+                check(f"{label}, {ranks} ranks refused by LAMMPS 29Sep2021 + Kokkos",
+                      bool(expected) and refused, str(error))
                 break
             states.append(gransph_run.read_dump(os.path.join(tmp, "column_collapse.dump")))
         if len(states) < 2:
             continue
         one, two = states
         assert np.max(np.abs(one["vz"])) > 1e-3, "the column did not move: nothing was compared"
-        for name, diff in gransph_run.dump_differences(one, two).items():
-            ok = diff < 1e-9
-            passed += ok
-            failed += not ok
-            print(f"{label:16s} {name:12s} max difference / max value = {diff:.2e} "
-                  f"{'ok' if ok else 'FAILED'}")
-print(f"{passed} passed, {failed} failed")
-sys.exit(1 if failed else 0)
+        gransph_run.check_same_state(check, f"{label} 1 - 2 ranks", one, two, 1e-9)
+check.finish()
