@@ -88,9 +88,11 @@ struct Neighbourhood {
   std::vector<PairParticle> particles;
   std::vector<Role> roles;
   std::vector<double> normals;    // 3 per particle: a dummy's own wall normal, or zeros
+  std::vector<double> mus;        // a dummy's wall friction (wall_friction), -1: rough
+  std::vector<double> slides;     // 4 per particle: a grain's share and slide direction
   WendlandC2 kernel;
   Viscosity visc{0.0, 0.0, false, Viscosity::BULK, 0.0};
-  bool wall_normal = false, shape_sums = true;
+  bool wall_normal = false, shape_sums = true, wall_friction = false;
 
   Neighbourhood(double h, int dim) : kernel(WendlandC2::make(h, dim)) {}
 
@@ -99,6 +101,8 @@ struct Neighbourhood {
     particles.push_back(particle);
     roles.push_back(role);
     for (int a = 0; a < 3; ++a) normals.push_back(normal ? normal[a] : 0.0);
+    mus.push_back(-1.0);
+    for (double held : {1.0, 0.0, 0.0, 0.0}) slides.push_back(held);
   }
   int num_neighbours(int i) const { return i == 0 ? int(particles.size()) - 1 : 0; }
   int neighbour(int, int k) const { return k + 1; }
@@ -106,9 +110,15 @@ struct Neighbourhood {
   bool granular(int i) const { return roles[i] == GRAIN; }
   bool wall(int i) const { return roles[i] == DUMMY; }
   double normal(int i, int a) const { return normals[3 * i + a]; }
+  double friction(int i) const { return mus[i]; }
+  double slide(int i, int k) const { return slides[4 * i + k]; }
 
-  // the rates of grain 0, and its virial if vir is not null
-  ParticleRates rates(double *vir = nullptr) const { return granular_rates(*this, 0, vir); }
+  // the rates of grain 0, its virial if vir is not null and its share and slide
+  // direction on the walls with a friction of their own (4 values) if slide is not null
+  ParticleRates rates(double *vir = nullptr, double *slide = nullptr) const
+  {
+    return granular_rates(*this, 0, vir, slide);
+  }
 };
 
 // a particle at x with velocity v, otherwise as particle()
@@ -284,6 +294,111 @@ TEST(PairTerms, WallForceIsTheReactionOnTheGrain)
     EXPECT_NEAR(vir_i[k], 0.5 * x_f[k], 1e-12 * std::fabs(x_f[k]) + 1e-300) << k;
     EXPECT_NEAR(vir_d[k], 0.5 * x_f[k], 1e-12 * std::fabs(x_f[k]) + 1e-300) << k;
   }
+}
+
+namespace {
+// A grain above a floor of dummies (own normal +z), the grain and the dummies in a
+// sheared stress state, so that the floor pushes it up and drags it along x
+struct GrainOnFloor {
+  const double dx = 0.01, h = 0.012;
+  Neighbourhood near{h, 3};
+
+  explicit GrainOnFloor(double mu)
+  {
+    const double up[3] = {0.0, 0.0, 1.0}, origin[3] = {0.0, 0.0, 0.5 * dx},
+                 v[3] = {0.3, 0.0, 0.0}, still[3] = {0.0, 0.0, 0.0};
+    const Sym3 sigma{-1.0e3, -1.0e3, -2.0e3, 0.0, 900.0, 0.0};    // shear stress xz
+    const double m = 1500.0 * dx * dx * dx;
+    near.wall_friction = true;
+    near.add(Neighbourhood::GRAIN, particle_at(origin, v, m, 1500.0, sigma));
+    for (int a = -2; a <= 2; ++a)
+      for (int b = -2; b <= 2; ++b)
+        for (int c = 0; c < 2; ++c) {
+          const double x[3] = {a * dx + 0.3 * dx, b * dx, -(c + 0.5) * dx};
+          near.add(Neighbourhood::DUMMY, particle_at(x, still, m, 1500.0, sigma), up);
+          near.mus.back() = mu;
+        }
+  }
+
+  // the forces on the dummies, summed: each dummy's wall_force with the grain's share
+  // and slide direction
+  void dummy_forces(const double *slide, double *sum) const
+  {
+    for (int a = 0; a < 3; ++a) sum[a] = 0.0;
+    for (size_t d = 1; d < near.particles.size(); ++d) {
+      Neighbourhood from_d(h, 3);
+      from_d.wall_friction = true;
+      from_d.add(Neighbourhood::DUMMY, near.particles[d], &near.normals[3 * d]);
+      from_d.mus[0] = near.mus[d];
+      from_d.add(Neighbourhood::GRAIN, near.particles[0]);
+      for (int k = 0; k < 4; ++k) from_d.slides[4 + k] = slide[k];
+      double fd[3];
+      wall_force(from_d, 0, fd, nullptr);
+      for (int a = 0; a < 3; ++a) sum[a] += fd[a];
+    }
+  }
+};
+}    // namespace
+
+// Coulomb's law at a wall with a friction of its own: the tangential force on the grain
+// is at most mu times the normal one, the normal one unchanged; a rough wall (mu < 0)
+// and a wall that holds (mu large) leave the force as it is; and the dummies take the
+// opposite of what the grain gets.
+TEST(PairTerms, WallFrictionLimitsTheTangentialForce)
+{
+  const GrainOnFloor rough(-1.0);
+  const ParticleRates free = rough.near.rates();
+  ASSERT_GT(free.acc[2], 0.0);                        // pushed up
+  ASSERT_GT(std::fabs(free.acc[0]), 0.1 * free.acc[2]);    // and dragged
+  for (double mu : {0.0, 0.1, 0.3, 100.0}) {
+    const GrainOnFloor floor(mu);
+    double slide[4] = {-1.0, 0.0, 0.0, 0.0};
+    const ParticleRates r = floor.near.rates(nullptr, slide);
+    const double share = slide[0];
+    const double tangential = std::sqrt(r.acc[0] * r.acc[0] + r.acc[1] * r.acc[1]);
+    EXPECT_NEAR(r.acc[2], free.acc[2], 1e-12 * free.acc[2]) << mu;
+    const double free_t = std::sqrt(free.acc[0] * free.acc[0] + free.acc[1] * free.acc[1]);
+    EXPECT_NEAR(tangential, std::fmin(free_t, mu * free.acc[2]), 1e-12 * free_t) << mu;
+    EXPECT_NEAR(share, std::fmin(1.0, mu * free.acc[2] / free_t), 1e-12) << mu;
+    double fd[3];
+    floor.dummy_forces(slide, fd);
+    const double m = floor.near.particles[0].mass;
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(fd[a], -m * r.acc[a], 1e-12 * m * free.acc[2]) << mu << " " << a;
+  }
+}
+
+// Where a sliding grain touches two walls of different friction, each wall takes its own:
+// tan(delta) times the normal force it takes.
+TEST(PairTerms, TwoWallsTakeTheirOwnFriction)
+{
+  GrainOnFloor floor(0.1);
+  for (size_t d = 1; d < floor.near.particles.size(); ++d)
+    if (floor.near.particles[d].x[0] > 0.0) floor.near.mus[d] = 0.3;
+  double slide[4];
+  floor.near.rates(nullptr, slide);
+  ASSERT_LT(slide[0], 1.0);    // it slides
+  for (double mu : {0.1, 0.3}) {
+    GrainOnFloor wall = floor;    // the dummies of one wall only
+    for (size_t d = 1; d < wall.near.particles.size(); ++d)
+      if (wall.near.mus[d] != mu) wall.near.particles[d].mass = 0.0;
+    double fd[3];
+    wall.dummy_forces(slide, fd);
+    EXPECT_LT(fd[2], 0.0);    // pushed down
+    EXPECT_NEAR(std::sqrt(fd[0] * fd[0] + fd[1] * fd[1]), -mu * fd[2], 1e-12 * std::fabs(fd[2]));
+  }
+}
+
+// A slip wall gives no shear: the grain's velocity gradient sees only the normal part of
+// its velocity relative to the dummies.
+TEST(PairTerms, SlipWallsGiveNoShear)
+{
+  GrainOnFloor slip(0.0), rough(-1.0);
+  const ParticleRates r_slip = slip.near.rates(), r_rough = rough.near.rates();
+  EXPECT_GT(std::fabs(r_rough.grad_v[0][2]), 1.0);    // the grain moves at 0.3 m/s along x
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) EXPECT_EQ(r_slip.grad_v[a][b], 0.0) << a << b;
+  EXPECT_EQ(r_slip.drho, 0.0);
 }
 
 // Neighbours outside the support, and atoms that are neither grain nor dummy (packed

@@ -40,8 +40,11 @@ template <class DeviceType> struct DeviceParticles {
   int granularbit, wallbit;
   GRANSPH::WendlandC2 kernel;
   GRANSPH::Viscosity visc;
-  bool wall_normal, shape_sums;
-  Kokkos::View<const double *, DeviceType> normals;    // 3 per atom, with wall_normal
+  bool wall_normal, shape_sums, wall_friction;
+  // 3 per atom, with wall_normal or wall_friction
+  Kokkos::View<const double *, DeviceType> normals;
+  // with wall_friction, 1 and 4 per atom
+  Kokkos::View<const double *, DeviceType> friction_mu, friction_slide;
 
   KOKKOS_INLINE_FUNCTION int num_neighbours(int i) const { return numneigh(i); }
   KOKKOS_INLINE_FUNCTION int neighbour(int i, int k) const { return neighbors(i, k) & NEIGHMASK; }
@@ -49,6 +52,11 @@ template <class DeviceType> struct DeviceParticles {
   KOKKOS_INLINE_FUNCTION bool granular(int i) const { return mask(i) & granularbit; }
   KOKKOS_INLINE_FUNCTION bool wall(int i) const { return mask(i) & wallbit; }
   KOKKOS_INLINE_FUNCTION double normal(int i, int a) const { return normals(3 * i + a); }
+  KOKKOS_INLINE_FUNCTION double friction(int i) const { return friction_mu(i); }
+  KOKKOS_INLINE_FUNCTION double slide(int i, int k) const
+  {
+    return friction_slide(GRANSPH::SLIDE_VALUES * i + k);
+  }
 };
 
 }    // namespace LAMMPS_NS

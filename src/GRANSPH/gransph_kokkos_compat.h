@@ -245,7 +245,8 @@ namespace GRANSPHCompat {
 #define GRANSPH_KOKKOS_FIX_DEVICE_EXCHANGE(a, b, c)
 #endif
 
-// In the class of a Kokkos fix (with typedef AT::... and a DeviceType): the
+// In the class of a Kokkos fix (GRANSPH_KOKKOS_FIX_FORWARD_COMM) or pair style
+// (GRANSPH_KOKKOS_PAIR_FORWARD_COMM), with typedef AT::... and a DeviceType: the
 // forward-communication hooks of this LAMMPS version, forwarding to
 //   int pack_forward_comm_device(int n, const SendList &list, tdual_comm_buffer &buf);
 //   void unpack_forward_comm_device(int n, int first, tdual_comm_buffer &buf);
@@ -260,7 +261,18 @@ namespace GRANSPHCompat {
   {                                                                                            \
     unpack_forward_comm_device(n, first, k_buf);                                               \
   }
+#define GRANSPH_KOKKOS_PAIR_FORWARD_COMM GRANSPH_KOKKOS_FIX_FORWARD_COMM
 #else
+#define GRANSPH_KOKKOS_PAIR_FORWARD_COMM                                                        \
+  int pack_forward_comm_kokkos(int n, DAT::tdual_int_2d k_sendlist, int iswap,                \
+                               DAT::tdual_xfloat_1d &k_buf, int, int *) override               \
+  {                                                                                            \
+    return pack_forward_comm_device(n, {k_sendlist.template view<DeviceType>(), iswap}, k_buf); \
+  }                                                                                            \
+  void unpack_forward_comm_kokkos(int n, int first, DAT::tdual_xfloat_1d &k_buf) override     \
+  {                                                                                            \
+    unpack_forward_comm_device(n, first, k_buf);                                               \
+  }
 #define GRANSPH_KOKKOS_FIX_FORWARD_COMM                                                         \
   int pack_forward_comm_fix_kokkos(int n, DAT::tdual_int_2d k_sendlist, int iswap,            \
                                    DAT::tdual_xfloat_1d &k_buf, int, int *) override           \

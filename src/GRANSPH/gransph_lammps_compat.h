@@ -40,6 +40,16 @@ namespace GRANSPHCompat {
 #endif
   }
 
+  // forward communication of a pair style's per-atom data to the ghosts
+  inline void forward_comm_pair(Comm *comm, Pair *pair)
+  {
+#if GRANSPH_LAMMPS_NEW_API
+    comm->forward_comm(pair);
+#else
+    comm->forward_comm_pair(pair);
+#endif
+  }
+
   // the region with this ID, or nullptr
   inline Region *find_region(Domain *domain, const char *id)
   {

@@ -16,6 +16,13 @@
      double normal(int i, int a)  (with wall_normal: a dummy's own unit wall normal,
                           or zeros for a dummy without one and for grains)
      bool   shape_sums   (sum the shape matrix, which only the corrected gradient uses)
+     bool   wall_friction  (walls with a friction of their own: pair_style wall/friction)
+     double friction(int i)  (with wall_friction: mu = tan(delta) of a dummy's wall, 0 for
+                          a slip wall, negative for a rough wall and for grains; a dummy
+                          with mu >= 0 has its own normal)
+     double slide(int i, int k)  (with wall_friction: a grain's WallFrictionSums::share
+                          (k = 0) and slide_direction (k = 1..3) of this evaluation, ghosts
+                          included; read for grains only)
 
    Vectorised on the host: each loop over the neighbours is an `omp simd` reduction
    into named scalars, its body free of branches (a neighbour outside the support or of
@@ -73,11 +80,17 @@ KOKKOS_INLINE_FUNCTION bool has_coincident_neighbour(const Particles &p, int i)
 // With WALL_NORMAL a dummy with its own normal n enters drho and grad_v through
 // (n . grad_i W) n; one without, through WallVelocitySums (the normal from the dummies'
 // weighted centre).
-// with VIRIAL, vir gets its virial 0.5 x_ij (x) F_ij (each pair is visited from both
+// With FRICTION the dummies of walls with a friction of their own (friction(j) >= 0)
+// push the grain with the tangential part of their force limited (WallFrictionSums), and
+// slide gets the grain's share and slide direction (SLIDE_VALUES); those of slip walls
+// (friction 0) enter drho and grad_v with the normal part of the relative velocity only,
+// so that the grain feels no shear from them.
+// With VIRIAL, vir gets its virial 0.5 x_ij (x) F_ij (each pair is visited from both
 // sides), in LAMMPS' order xx yy zz xy xz yz. A neighbour on top of i (r = 0) has
 // grad W = 0 and Pi = 0.
-template <bool WALL_NORMAL, bool SHAPE, bool VIRIAL, class Particles>
-KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir)
+template <bool WALL_NORMAL, bool SHAPE, bool VIRIAL, bool FRICTION, class Particles>
+KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir,
+                                                    double *slide)
 {
   const PairParticle &pi = p.particle(i);
   const double xi = pi.x[0], yi = pi.x[1], zi = pi.x[2];
@@ -103,12 +116,19 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
          gzy = 0.0, gzz = 0.0;
   double ox = 0.0, oy = 0.0, oz = 0.0;
   double v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0, v4 = 0.0, v5 = 0.0;
+  // WallFrictionSums (f..), and the virial of its pairs' normal (n.) and tangential (t.)
+  // parts, and the moment q. of their limits (the tangential virial while sliding)
+  double fax = 0.0, fay = 0.0, faz = 0.0, fnx = 0.0, fny = 0.0, fnz = 0.0, f_lim = 0.0;
+  double n0 = 0.0, n1 = 0.0, n2 = 0.0, n3 = 0.0, n4 = 0.0, n5 = 0.0;
+  double t0 = 0.0, t1 = 0.0, t2 = 0.0, t3 = 0.0, t4 = 0.0, t5 = 0.0;
+  double qx = 0.0, qy = 0.0, qz = 0.0;
 
   const int n = p.num_neighbours(i);
   GRANSPH_SIMD_SUM(drho, ax, ay, az, lxx, lxy, lxz, lyx, lyy, lyz, lzx, lzy, lzz, kxx, kyy,
                    kzz, kxy, kxz, kyz, w_sum, visc_w, dxx, dxy, dxz, dyx, dyy, dyz, dzx, dzy,
                    dzz, gxx, gxy, gxz, gyx, gyy, gyz, gzx, gzy, gzz, ox, oy, oz, v0, v1, v2,
-                   v3, v4, v5)
+                   v3, v4, v5, fax, fay, faz, fnx, fny, fnz, f_lim, n0, n1, n2, n3, n4, n5,
+                   t0, t1, t2, t3, t4, t5, qx, qy, qz)
   for (int k = 0; k < n; ++k) {
     const int j = p.neighbour(i, k);
     const PairParticle &pj = p.particle(j);
@@ -133,9 +153,53 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     const double ty = stress_gradient(sxy, syy, syz, inv_rho_ij, visc, gwx, gwy, gwz, gwy);
     const double tz = stress_gradient(sxz, syz, szz, inv_rho_ij, visc, gwx, gwy, gwz, gwz);
     const double m = pj.mass, volume = m * pj.inv_rho;
-    ax += m * tx;
-    ay += m * ty;
-    az += m * tz;
+    // a dummy of a wall with a friction of its own: its push goes to the friction sums,
+    // along its normal (nx, ny, nz; zeros for the others)
+    bool limited = false, slip = false;
+    double nx = 0.0, ny = 0.0, nz = 0.0;
+    if (FRICTION) {
+      const double mu = p.friction(j);
+      limited = dummy && mu >= 0.0;
+      slip = limited && mu == 0.0;
+      nx = limited ? p.normal(j, 0) : 0.0;
+      ny = limited ? p.normal(j, 1) : 0.0;
+      nz = limited ? p.normal(j, 2) : 0.0;
+      const double an = m * (tx * nx + ty * ny + tz * nz);
+      fax += limited ? m * tx : 0.0;
+      fay += limited ? m * ty : 0.0;
+      faz += limited ? m * tz : 0.0;
+      fnx += an * nx;
+      fny += an * ny;
+      fnz += an * nz;
+      f_lim += limited ? mu * an : 0.0;
+      if (VIRIAL) {    // F = m_i (a_n + a_t), 0.5 x_ij (x) F for either part
+        const double hn = limited ? 0.5 * m_i * an : 0.0, ht = limited ? 0.5 * m_i : 0.0;
+        qx += hn * mu * rx;
+        qy += hn * mu * ry;
+        qz += hn * mu * rz;
+        const double atx = m * tx - an * nx, aty = m * ty - an * ny, atz = m * tz - an * nz;
+        n0 += hn * rx * nx;
+        n1 += hn * ry * ny;
+        n2 += hn * rz * nz;
+        n3 += hn * rx * ny;
+        n4 += hn * rx * nz;
+        n5 += hn * ry * nz;
+        t0 += ht * rx * atx;
+        t1 += ht * ry * aty;
+        t2 += ht * rz * atz;
+        t3 += ht * rx * aty;
+        t4 += ht * rx * atz;
+        t5 += ht * ry * atz;
+      }
+    }
+    const double m_a = limited ? 0.0 : m;
+    ax += m_a * tx;
+    ay += m_a * ty;
+    az += m_a * tz;
+    // the relative velocity in drho and grad_v: that along the normal of a slip wall
+    const double dv_n = dvx * nx + dvy * ny + dvz * nz;
+    const double ux = slip ? dv_n * nx : dvx, uy = slip ? dv_n * ny : dvy,
+                 uz = slip ? dv_n * nz : dvz;
 
     // eq. 6a and the velocity gradient, v_ji (x) grad_i W = -dv (x) grad_i W weighted by
     // the volume m/rho; under WALL_NORMAL, of a dummy with its own normal n through
@@ -152,16 +216,16 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
       to_wall = dummy && !own;
     }
     const double m_r = to_wall ? 0.0 : m, s_r = to_wall ? 0.0 : -volume;
-    drho += m_r * (dvx * ex + dvy * ey + dvz * ez);
-    lxx += s_r * dvx * ex;
-    lxy += s_r * dvx * ey;
-    lxz += s_r * dvx * ez;
-    lyx += s_r * dvy * ex;
-    lyy += s_r * dvy * ey;
-    lyz += s_r * dvy * ez;
-    lzx += s_r * dvz * ex;
-    lzy += s_r * dvz * ey;
-    lzz += s_r * dvz * ez;
+    drho += m_r * (ux * ex + uy * ey + uz * ez);
+    lxx += s_r * ux * ex;
+    lxy += s_r * ux * ey;
+    lxz += s_r * ux * ez;
+    lyx += s_r * uy * ex;
+    lyy += s_r * uy * ey;
+    lyz += s_r * uy * ez;
+    lzx += s_r * uz * ex;
+    lzy += s_r * uz * ey;
+    lzz += s_r * uz * ez;
     if (SHAPE) {    // x_ji (x) grad_i W = -dx (x) grad_i W, symmetric (grad W is along dx)
       kxx += -volume * rx * gwx;
       kyy += -volume * ry * gwy;
@@ -175,31 +239,31 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     visc_w += volume * w * (0.5 * rho_i * pj.rho * visc);
     if (WALL_NORMAL) {
       const double m_w = to_wall ? m : 0.0, s_w = to_wall ? -volume : 0.0;
-      dxx += m_w * dvx * gwx;
-      dxy += m_w * dvx * gwy;
-      dxz += m_w * dvx * gwz;
-      dyx += m_w * dvy * gwx;
-      dyy += m_w * dvy * gwy;
-      dyz += m_w * dvy * gwz;
-      dzx += m_w * dvz * gwx;
-      dzy += m_w * dvz * gwy;
-      dzz += m_w * dvz * gwz;
-      gxx += s_w * dvx * gwx;
-      gxy += s_w * dvx * gwy;
-      gxz += s_w * dvx * gwz;
-      gyx += s_w * dvy * gwx;
-      gyy += s_w * dvy * gwy;
-      gyz += s_w * dvy * gwz;
-      gzx += s_w * dvz * gwx;
-      gzy += s_w * dvz * gwy;
-      gzz += s_w * dvz * gwz;
+      dxx += m_w * ux * gwx;
+      dxy += m_w * ux * gwy;
+      dxz += m_w * ux * gwz;
+      dyx += m_w * uy * gwx;
+      dyy += m_w * uy * gwy;
+      dyz += m_w * uy * gwz;
+      dzx += m_w * uz * gwx;
+      dzy += m_w * uz * gwy;
+      dzz += m_w * uz * gwz;
+      gxx += s_w * ux * gwx;
+      gxy += s_w * ux * gwy;
+      gxz += s_w * ux * gwz;
+      gyx += s_w * uy * gwx;
+      gyy += s_w * uy * gwy;
+      gyz += s_w * uy * gwz;
+      gzx += s_w * uz * gwx;
+      gzy += s_w * uz * gwy;
+      gzz += s_w * uz * gwz;
       const double vw = to_wall ? volume * w : 0.0;
       ox += vw * rx;
       oy += vw * ry;
       oz += vw * rz;
     }
-    if (VIRIAL) {    // F_ij = m_i m_j t
-      const double mm = 0.5 * m_i * m;
+    if (VIRIAL) {    // F_ij = m_i m_j t (a friction wall's pair: above)
+      const double mm = 0.5 * m_i * m_a;
       v0 += mm * rx * tx;
       v1 += mm * ry * ty;
       v2 += mm * rz * tz;
@@ -221,6 +285,26 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
                                  {ox, oy, oz}};
     walls.add_along_normal(r);
   }
+  if (FRICTION) {
+    const WallFrictionSums friction{{fax, fay, faz}, {fnx, fny, fnz}, f_lim};
+    const double s = friction.share();
+    double t[3];
+    friction.slide_direction(t);
+    friction.add_limited(r.acc, s);
+    if (slide) {
+      slide[0] = s;
+      for (int k = 0; k < 3; ++k) slide[1 + k] = t[k];
+    }
+    if (VIRIAL) {    // while sliding each pair's tangential part is mu_d a_n t (wall_force)
+      const bool slides = s < 1.0;
+      v0 += n0 + (slides ? qx * t[0] : t0);
+      v1 += n1 + (slides ? qy * t[1] : t1);
+      v2 += n2 + (slides ? qz * t[2] : t2);
+      v3 += n3 + (slides ? qx * t[1] : t3);
+      v4 += n4 + (slides ? qx * t[2] : t4);
+      v5 += n5 + (slides ? qy * t[2] : t5);
+    }
+  }
   if (VIRIAL) {
     vir[0] += v0;
     vir[1] += v1;
@@ -232,22 +316,28 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
   return r;
 }
 
-// granular_rates with the options of p, and the virial if vir is not null
-template <class Particles>
-KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir)
+// granular_rates with the options of p, the virial if vir is not null, and with
+// wall/friction the grain's share and slide direction if slide is not null
+template <bool WALL_NORMAL, bool SHAPE, class Particles>
+KOKKOS_INLINE_FUNCTION ParticleRates granular_rates_of(const Particles &p, int i, double *vir,
+                                                       double *slide)
 {
-  if (p.wall_normal) {
-    if (p.shape_sums)
-      return vir ? granular_rates<true, true, true>(p, i, vir)
-                 : granular_rates<true, true, false>(p, i, vir);
-    return vir ? granular_rates<true, false, true>(p, i, vir)
-               : granular_rates<true, false, false>(p, i, vir);
-  }
-  if (p.shape_sums)
-    return vir ? granular_rates<false, true, true>(p, i, vir)
-               : granular_rates<false, true, false>(p, i, vir);
-  return vir ? granular_rates<false, false, true>(p, i, vir)
-             : granular_rates<false, false, false>(p, i, vir);
+  if (p.wall_friction)
+    return vir ? granular_rates<WALL_NORMAL, SHAPE, true, true>(p, i, vir, slide)
+               : granular_rates<WALL_NORMAL, SHAPE, false, true>(p, i, vir, slide);
+  return vir ? granular_rates<WALL_NORMAL, SHAPE, true, false>(p, i, vir, slide)
+             : granular_rates<WALL_NORMAL, SHAPE, false, false>(p, i, vir, slide);
+}
+
+template <class Particles>
+KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir,
+                                                    double *slide)
+{
+  if (p.wall_normal)
+    return p.shape_sums ? granular_rates_of<true, true>(p, i, vir, slide)
+                        : granular_rates_of<true, false>(p, i, vir, slide);
+  return p.shape_sums ? granular_rates_of<false, true>(p, i, vir, slide)
+                      : granular_rates_of<false, false>(p, i, vir, slide);
 }
 
 // The sums of eq. 8 for dummy particle d over its granular neighbours.
@@ -284,8 +374,11 @@ template <class Particles> KOKKOS_INLINE_FUNCTION WallSums wall_sums(const Parti
 }
 
 // Force of the granular neighbours on dummy particle d (eq. 9), with its stress of eq. 8
-// in place; with VIRIAL, vir as in granular_rates.
-template <bool VIRIAL, class Particles>
+// in place; with VIRIAL, vir as in granular_rates. With FRICTION, a dummy of a wall with
+// a friction of its own takes the opposite of what the grain got from it: the pair force
+// as it is while the walls hold the grain, and while it slides the normal part and mu_d
+// times it along the grain's slide direction (WallFrictionSums).
+template <bool VIRIAL, bool FRICTION, class Particles>
 KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force, double *vir)
 {
   const PairParticle &pd = p.particle(d);
@@ -297,6 +390,10 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
   const WendlandC2 kernel = p.kernel;
   const Viscosity viscosity = p.visc;
   const double cutsq = kernel.cutsq();
+  const double mu_d = FRICTION ? p.friction(d) : -1.0;
+  const bool limited = mu_d >= 0.0;
+  const double nx = limited ? p.normal(d, 0) : 0.0, ny = limited ? p.normal(d, 1) : 0.0,
+               nz = limited ? p.normal(d, 2) : 0.0;
   double fx = 0.0, fy = 0.0, fz = 0.0;
   double v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0, v4 = 0.0, v5 = 0.0;
   const int n = p.num_neighbours(d);
@@ -317,9 +414,16 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
     const double sxx = sxx_d + pj.sigma.xx, syy = syy_d + pj.sigma.yy, szz = szz_d + pj.sigma.zz;
     const double sxy = sxy_d + pj.sigma.xy, sxz = sxz_d + pj.sigma.xz, syz = syz_d + pj.sigma.yz;
     const double mm = m_d * pj.mass;
-    const double fdx = mm * stress_gradient(sxx, sxy, sxz, inv_rho_ij, visc, gwx, gwy, gwz, gwx);
-    const double fdy = mm * stress_gradient(sxy, syy, syz, inv_rho_ij, visc, gwx, gwy, gwz, gwy);
-    const double fdz = mm * stress_gradient(sxz, syz, szz, inv_rho_ij, visc, gwx, gwy, gwz, gwz);
+    double fdx = mm * stress_gradient(sxx, sxy, sxz, inv_rho_ij, visc, gwx, gwy, gwz, gwx);
+    double fdy = mm * stress_gradient(sxy, syy, syz, inv_rho_ij, visc, gwx, gwy, gwz, gwy);
+    double fdz = mm * stress_gradient(sxz, syz, szz, inv_rho_ij, visc, gwx, gwy, gwz, gwz);
+    if (FRICTION) {
+      const bool slides = limited && p.slide(j, 0) < 1.0;
+      const double fn = fdx * nx + fdy * ny + fdz * nz, mu_fn = mu_d * fn;
+      fdx = slides ? fn * nx + mu_fn * p.slide(j, 1) : fdx;
+      fdy = slides ? fn * ny + mu_fn * p.slide(j, 2) : fdy;
+      fdz = slides ? fn * nz + mu_fn * p.slide(j, 3) : fdz;
+    }
     fx += fdx;
     fy += fdy;
     fz += fdz;
@@ -345,14 +449,19 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
   }
 }
 
-// wall_force, with the virial if vir is not null
+// wall_force with the options of p, with the virial if vir is not null
 template <class Particles>
 KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force, double *vir)
 {
-  if (vir)
-    wall_force<true>(p, d, force, vir);
+  if (p.wall_friction) {
+    if (vir)
+      wall_force<true, true>(p, d, force, vir);
+    else
+      wall_force<false, true>(p, d, force, vir);
+  } else if (vir)
+    wall_force<true, false>(p, d, force, vir);
   else
-    wall_force<false>(p, d, force, vir);
+    wall_force<false, false>(p, d, force, vir);
 }
 
 }    // namespace GRANSPH

@@ -183,6 +183,52 @@ struct WallVelocitySums {
   }
 };
 
+// Walls with a friction of their own (pair_style keyword wall/friction): Coulomb's law
+// on the force that a grain's dummy neighbours of such walls put on it. Each pair's
+// acceleration a_d is split along the dummy's own unit normal n_d (pointing into the
+// sand): its normal part (a_d . n_d) n_d, and the rest, tangential. The walls can carry
+// a tangential part up to sum_d mu_d (a_d . n_d), mu_d = tan(delta) of the dummy's wall
+// (0 on a slip wall); beyond it the grain slides and the tangential part is scaled down
+// to that limit, in its own direction t. The dummy of each pair takes the opposite of
+// the limited pair force (wall_force): while the grain slides, its tangential part is
+// mu_d (a_d . n_d) t, so that each wall takes its own friction where a grain touches
+// two, and the walls feel what the grains feel.
+// Values per grain of how it slides on walls with a friction of their own, for the
+// dummies' forces: its share (WallFrictionSums::share) and slide direction
+constexpr int SLIDE_VALUES = 4;
+
+struct WallFrictionSums {
+  double acc[3];       // sum_d a_d over the dummies of friction walls
+  double normal[3];    // sum_d (a_d . n_d) n_d
+  double limit;        // sum_d mu_d (a_d . n_d)
+
+  // the share of its tangential part that the walls carry: 1 while they hold the
+  // grain, below 1 while it slides, 0 on slip walls
+  KOKKOS_INLINE_FUNCTION double share() const
+  {
+    const double t[3] = {acc[0] - normal[0], acc[1] - normal[1], acc[2] - normal[2]};
+    const double t_len = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    const double bound = fmax(limit, 0.0);    // walls that pull the grain carry no friction
+    return t_len > bound ? bound / t_len : 1.0;
+  }
+
+  // the direction t of the tangential part while the grain slides on walls that push
+  // it (zeros otherwise: the walls hold it, or carry no friction)
+  KOKKOS_INLINE_FUNCTION void slide_direction(double *t) const
+  {
+    for (int k = 0; k < 3; ++k) t[k] = acc[k] - normal[k];
+    const double t_len = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    const bool slides = t_len > limit && limit > 0.0;
+    for (int k = 0; k < 3; ++k) t[k] = slides ? t[k] / t_len : 0.0;
+  }
+
+  // adds the walls' acceleration to a, its tangential part scaled by `share`
+  KOKKOS_INLINE_FUNCTION void add_limited(double *a, double share) const
+  {
+    for (int k = 0; k < 3; ++k) a[k] += normal[k] + share * (acc[k] - normal[k]);
+  }
+};
+
 // Dummy-particle stress, eq. 8 (Adami et al. 2012 generalised to a tensor): the grains'
 // stress extrapolated to dummy particle d, sigma_e = sum_k sigma_k W_dk / sum_k W_dk, and
 // the weight of the grains between them, from R = sum_k rho_k r_dk W_dk / sum_k W_dk with

@@ -4,7 +4,8 @@
    Per evaluation: ghosts get fresh density and stress; owned dummy particles
    get their stress by extrapolation (eq. 8), pass it to their ghosts and get
    the force the grains exert on them (eq. 9); then the grains get their rates
-   (eqs. 6, 7, 34, 35). A full neighbour list: each particle sums over its own
+   (eqs. 6, 7, 34, 35). With walls of a friction of their own the dummies get
+   their force after the grains, from how the grains slide on them. A full neighbour list: each particle sums over its own
    neighbours into itself alone (gransph_neighbour_sums.h, shared with the
    Kokkos twin), in loops the compiler vectorises.
 ------------------------------------------------------------------------- */
@@ -17,6 +18,7 @@
 #include "error.h"
 #include "fix_sph_integrate.h"
 #include "force.h"
+#include "group.h"
 #include "gransph_lammps_compat.h"
 #include "gransph_neighbour_sums.h"
 #include "memory.h"
@@ -26,6 +28,7 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -33,6 +36,9 @@ using GRANSPH::PairParticle;
 using GRANSPH::Sym3;
 
 namespace {
+// values per grain of how it slides on walls with a friction of their own
+constexpr int SLIDE = GRANSPH::SLIDE_VALUES;
+
 
 // Host accessor for the shared neighbour sums (gransph_neighbour_sums.h).
 struct HostParticles {
@@ -42,8 +48,9 @@ struct HostParticles {
   int granularbit, wallbit;
   GRANSPH::WendlandC2 kernel;
   GRANSPH::Viscosity visc;
-  bool wall_normal, shape_sums;
-  const double *normals;    // 3 per atom, with wall_normal
+  bool wall_normal, shape_sums, wall_friction;
+  const double *normals;    // 3 per atom, with wall_normal or wall_friction
+  const double *friction_mu, *friction_slide;    // 1 and 4 per atom, with wall_friction
 
   int num_neighbours(int i) const { return numneigh[i]; }
   int neighbour(int i, int k) const { return firstneigh[i][k] & NEIGHMASK; }
@@ -51,6 +58,8 @@ struct HostParticles {
   bool granular(int i) const { return mask[i] & granularbit; }
   bool wall(int i) const { return mask[i] & wallbit; }
   double normal(int i, int a) const { return normals[3 * i + a]; }
+  double friction(int i) const { return friction_mu[i]; }
+  double slide(int i, int k) const { return friction_slide[SLIDE * i + k]; }
 };
 
 }    // namespace
@@ -60,7 +69,8 @@ struct HostParticles {
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
     Pair(lmp), h(0.0), visc{DEFAULT_ALPHA, DEFAULT_BETA, false, GRANSPH::Viscosity::BULK, 0.0},
     corrected_gradient(0), wall_normal(0), wall_stress_mode(GRANSPH::WallSums::RATIO),
-    integrator(nullptr), nmax(0), particles(nullptr), normals(nullptr)
+    integrator(nullptr), nmax(0), particles(nullptr), normals(nullptr), friction(nullptr),
+    slide(nullptr)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -71,6 +81,8 @@ PairSPHGranular::~PairSPHGranular()
 {
   memory->sfree(particles);
   memory->sfree(normals);
+  memory->sfree(friction);
+  memory->sfree(slide);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -86,23 +98,46 @@ void PairSPHGranular::compute(int eflag, int vflag)
   FixSPHIntegrate &fix = *integrator;
   const int nall = atom->nlocal + atom->nghost;
   fix.forward_comm_state();
-  // wall/gradient normal may be set by a pair_style issued again after the arrays grew
-  const bool grown = nall > nmax || (wall_normal && !normals);
+  const bool limited = fix.wallbit && !friction_walls.empty();
+  // wall/gradient normal or wall/friction may be set by a pair_style issued again after
+  // the arrays grew
+  const bool grown =
+      nall > nmax || ((wall_normal || limited) && !normals) || (limited && !friction);
   if (grown) grow(atom->nmax);
   pack_particles(0, nall);
-  // the normals follow the atoms, which change places only at a run's setup or a list build
-  if (wall_normal && (grown || update->setupflag || neighbor->ago == 0))
+  // normals and frictions follow the atoms, which change places only at a run's setup or
+  // a list build
+  int unnormalled = -1;
+  if ((wall_normal || limited) && (grown || update->setupflag || neighbor->ago == 0)) {
     pack_wall_normals(normals, nall);
-  const HostParticles p{particles, list->firstneigh, list->numneigh, atom->mask, fix.groupbit,
-                        fix.wallbit, GRANSPH::WendlandC2::make(h, domain->dimension), visc,
-                        wall_normal != 0, corrected_gradient != 0, normals};
+    if (limited) unnormalled = pack_wall_friction(friction, normals, nall);
+  }
+  if (limited && update->setupflag) stop_if_unnormalled(unnormalled);
+  const HostParticles p{particles,
+                        list->firstneigh,
+                        list->numneigh,
+                        atom->mask,
+                        fix.groupbit,
+                        fix.wallbit,
+                        GRANSPH::WendlandC2::make(h, domain->dimension),
+                        visc,
+                        wall_normal != 0,
+                        corrected_gradient != 0,
+                        limited,
+                        normals,
+                        friction,
+                        slide};
   if (update->setupflag) check_no_coincident(p);
   if (fix.wallbit) {
-    walls(p);
+    walls(p, !limited);
     fix.forward_comm_state();
     pack_particles(atom->nlocal, nall);
   }
   grains(p);
+  if (limited) {
+    forward_comm_friction_slide();
+    wall_forces(p);
+  }
 }
 
 // at the setup of a run: no two interacting particles on one place
@@ -154,14 +189,14 @@ void PairSPHGranular::tally_virial(int i, const double *vir)
 }
 
 // dummy-particle stresses (eq. 8), with the wall acceleration from the velocity change
-// since the last evaluation, and the grains' forces on them (eq. 9), which need a wall's
-// own new stress only
-template <class Particles> void PairSPHGranular::walls(const Particles &p)
+// since the last evaluation, and with_forces the grains' forces on them (eq. 9), which
+// need a wall's own new stress only
+template <class Particles> void PairSPHGranular::walls(const Particles &p, bool with_forces)
 {
   FixSPHIntegrate &fix = *integrator;
   const int inum = list->inum;
   const int *ilist = list->ilist;
-  double **v = atom->v, **f = atom->f;
+  double **v = atom->v;
   double g[3];
   fix.gravity_vector(g);
   const int stepping = !update->setupflag;
@@ -175,11 +210,26 @@ template <class Particles> void PairSPHGranular::walls(const Particles &p)
     const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
     particles[d].sigma = sums.stress(g_minus_a, wall_stress_mode);
     particles[d].sigma.store(&fix.state[d][FixSPHIntegrate::SIGMA]);
-    if (!sums.has_neighbours()) continue;
-    double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, fd[3];
-    GRANSPH::wall_force(p, d, fd, vflag_either ? vir : nullptr);
-    for (int a = 0; a < 3; ++a) f[d][a] += fd[a] / force->ftm2v;
-    if (vflag_either) tally_virial(d, vir);
+    if (with_forces && sums.has_neighbours()) add_wall_force(p, d);
+  }
+}
+
+// the force of the grains on dummy particle d (eq. 9), and its virial
+template <class Particles> void PairSPHGranular::add_wall_force(const Particles &p, int d)
+{
+  double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, fd[3];
+  GRANSPH::wall_force(p, d, fd, vflag_either ? vir : nullptr);
+  for (int a = 0; a < 3; ++a) atom->f[d][a] += fd[a] / force->ftm2v;
+  if (vflag_either) tally_virial(d, vir);
+}
+
+// the grains' forces on the dummy particles (eq. 9), once it is known how the grains
+// slide on the walls with a friction of their own (wall/friction)
+template <class Particles> void PairSPHGranular::wall_forces(const Particles &p)
+{
+  for (int ii = 0; ii < list->inum; ++ii) {
+    const int d = list->ilist[ii];
+    if (p.wall(d)) add_wall_force(p, d);
   }
 }
 
@@ -195,7 +245,8 @@ template <class Particles> void PairSPHGranular::grains(const Particles &p)
     const int i = ilist[ii];
     if (!p.granular(i)) continue;
     double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, vflag_either ? vir : nullptr);
+    double *slides = p.wall_friction ? &slide[SLIDE * i] : nullptr;
+    GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, vflag_either ? vir : nullptr, slides);
     for (int a = 0; a < 3; ++a) f[i][a] += particles[i].mass * r.acc[a] / force->ftm2v;
     if (corrected_gradient) r.correct_gradient(dim);
     fix.state[i][FixSPHIntegrate::VISC_PRESSURE] = r.viscous_pressure();
@@ -212,9 +263,76 @@ void PairSPHGranular::grow(int n)
   nmax = n;
   memory->sfree(particles);
   memory->sfree(normals);
+  memory->sfree(friction);
+  memory->sfree(slide);
   particles = (PairParticle *) memory->smalloc(sizeof(PairParticle) * nmax, "pair:particles");
-  normals = wall_normal ? (double *) memory->smalloc(sizeof(double) * 3 * nmax, "pair:normals")
-                        : nullptr;
+  const bool limited = !friction_walls.empty();
+  normals = wall_normal || limited
+      ? (double *) memory->smalloc(sizeof(double) * 3 * nmax, "pair:normals")
+      : nullptr;
+  friction = nullptr;
+  slide = nullptr;
+  if (!limited) return;
+  friction = (double *) memory->smalloc(sizeof(double) * nmax, "pair:friction");
+  slide = (double *) memory->smalloc(sizeof(double) * SLIDE * nmax, "pair:slide");
+  for (int k = 0; k < SLIDE * nmax; ++k) slide[k] = k % SLIDE == 0 ? 1.0 : 0.0;    // held
+}
+
+// The friction coefficient mu of atoms [0, n) into `out`: that of the last wall/friction
+// entry whose group holds the dummy particle, -1 for rough walls and the others. Returns
+// an owned dummy of a wall with a friction of its own that has no normal (`normals`, as
+// pack_wall_normals writes them; the friction is taken against it), or -1.
+int PairSPHGranular::pack_wall_friction(double *out, const double *normals, int n) const
+{
+  const int *mask = atom->mask, wallbit = integrator->wallbit;
+  int missing = -1;
+  for (int i = 0; i < n; ++i) {
+    out[i] = -1.0;
+    if (!(mask[i] & wallbit)) continue;
+    for (const FrictionWall &w : friction_walls)
+      if (mask[i] & group->bitmask[w.group]) out[i] = w.mu;
+    const double *ni = &normals[3 * i];
+    if (out[i] >= 0.0 && ni[0] == 0.0 && ni[1] == 0.0 && ni[2] == 0.0 && missing < 0 &&
+        i < atom->nlocal)
+      missing = i;
+  }
+  return missing;
+}
+
+// Collective, at a run's setup: stops the run if any rank has a dummy particle of a wall
+// with a friction of its own without a normal (owned index i >= 0)
+void PairSPHGranular::stop_if_unnormalled(int i)
+{
+  int mine = i >= 0, any = 0;
+  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+  if (!any) return;
+  if (i >= 0)
+    error->one(FLERR,
+               "Pair style sph/granular: dummy particle {} of a wall/friction group has no wall "
+               "normal: give the group's particles theirs (fix property/atom d2_wall_normal 3 "
+               "ghost yes, then set group ... d2_wall_normal[1] ...; or a data file's "
+               "WallNormals section)",
+               atom->tag[i]);
+  MPI_Barrier(world);    // until the rank with such a particle stops the run
+}
+
+void PairSPHGranular::forward_comm_friction_slide()
+{
+  GRANSPHCompat::forward_comm_pair(comm, this);
+}
+
+int PairSPHGranular::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
+                                       int * /*pbc*/)
+{
+  for (int k = 0; k < n; ++k)
+    for (int c = 0; c < SLIDE; ++c) buf[SLIDE * k + c] = slide[SLIDE * list[k] + c];
+  return SLIDE * n;
+}
+
+void PairSPHGranular::unpack_forward_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; ++k)
+    for (int c = 0; c < SLIDE; ++c) slide[SLIDE * (first + k) + c] = buf[SLIDE * k + c];
 }
 
 // The wall normals of atoms [0, n), 3 per atom into `out`: a dummy particle's own, from
@@ -286,6 +404,8 @@ void PairSPHGranular::pack_particles(int from, int to)
      wall/gradient full|normal  dummy neighbours enter drho and grad_v fully, or
                               along the wall normal only
      wall/stress paper|ratio  how eq. 8 adds the grains' weight to the dummies
+     wall/friction group rough|slip|delta  the friction of the walls of a dummy group:
+                              as the sand's (rough), none, or Coulomb's at angle delta
 ------------------------------------------------------------------------- */
 
 void PairSPHGranular::settings(int narg, char **arg)
@@ -305,9 +425,34 @@ void PairSPHGranular::settings(int narg, char **arg)
                arg[iarg]);
     return -1;
   };
+  friction_walls.clear();
   int iarg = 1;
   while (iarg < narg) {
     const std::string key = arg[iarg];
+    if (key == "wall/friction") {
+      if (iarg + 3 > narg)
+        error->all(FLERR, "Pair style sph/granular: wall/friction needs a group and a value");
+      const int igroup = group->find(arg[iarg + 1]);
+      if (igroup < 0)
+        error->all(FLERR, "Pair style sph/granular: wall/friction group {} does not exist",
+                   arg[iarg + 1]);
+      const std::string value = arg[iarg + 2];
+      double mu = -1.0;    // rough
+      if (value == "slip")
+        mu = 0.0;
+      else if (value != "rough") {
+        const double delta = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+        if (delta < 0.0 || delta >= 90.0)
+          error->all(FLERR,
+                     "Pair style sph/granular: wall/friction of group {} must be rough, slip or "
+                     "an angle in [0, 90) degrees, not {}",
+                     arg[iarg + 1], value);
+        mu = tan(delta * M_PI / 180.0);
+      }
+      friction_walls.push_back({igroup, mu});
+      iarg += 3;
+      continue;
+    }
     if (key == "visc") {
       if (iarg + 3 > narg) error->all(FLERR, "Pair style sph/granular: visc needs alpha and beta");
       visc.alpha = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -375,6 +520,14 @@ void PairSPHGranular::init_style()
                "fix sph/phasechange)");
   visc.c0 = sqrt(integrator->material.bulk_modulus() / integrator->material.rho0);
   check_wall_normals();
+  for (const FrictionWall &w : friction_walls)
+    if (!group->names[w.group])
+      error->all(FLERR, "Pair style sph/granular: a wall/friction group was deleted");
+  if (!friction_walls.empty() && !integrator->wallbit)
+    error->all(FLERR,
+               "Pair style sph/granular: wall/friction needs dummy walls: the integrator fix "
+               "has no walls group");
+  comm_forward = friction_walls.empty() ? 0 : SLIDE;    // how the grains slide on the walls
   // a full list: each particle sums into itself alone, with no reverse communication
   GRANSPHCompat::request_full_list(neighbor, this, instance_me);
 }
@@ -409,22 +562,35 @@ void PairSPHGranular::read_restart(FILE *fp)
 void PairSPHGranular::write_restart_settings(FILE *fp)
 {
   const double values[3] = {h, visc.alpha, visc.beta};
-  const int choices[5] = {visc.sound, visc.walls, corrected_gradient, wall_stress_mode,
-                          wall_normal};
+  const int choices[6] = {visc.sound, visc.walls, corrected_gradient, wall_stress_mode,
+                          wall_normal, (int) friction_walls.size()};
   fwrite(values, sizeof(double), 3, fp);
-  fwrite(choices, sizeof(int), 5, fp);
+  fwrite(choices, sizeof(int), 6, fp);
+  for (const FrictionWall &w : friction_walls) {
+    fwrite(&w.group, sizeof(int), 1, fp);
+    fwrite(&w.mu, sizeof(double), 1, fp);
+  }
 }
 
 void PairSPHGranular::read_restart_settings(FILE *fp)
 {
   double values[3];
-  int choices[5];
+  int choices[6];
   if (comm->me == 0) {
     utils::sfread(FLERR, values, sizeof(double), 3, fp, nullptr, error);
-    utils::sfread(FLERR, choices, sizeof(int), 5, fp, nullptr, error);
+    utils::sfread(FLERR, choices, sizeof(int), 6, fp, nullptr, error);
   }
   MPI_Bcast(values, 3, MPI_DOUBLE, 0, world);
-  MPI_Bcast(choices, 5, MPI_INT, 0, world);
+  MPI_Bcast(choices, 6, MPI_INT, 0, world);
+  friction_walls.resize(choices[5]);
+  for (FrictionWall &w : friction_walls) {
+    if (comm->me == 0) {
+      utils::sfread(FLERR, &w.group, sizeof(int), 1, fp, nullptr, error);
+      utils::sfread(FLERR, &w.mu, sizeof(double), 1, fp, nullptr, error);
+    }
+    MPI_Bcast(&w.group, 1, MPI_INT, 0, world);
+    MPI_Bcast(&w.mu, 1, MPI_DOUBLE, 0, world);
+  }
   h = values[0];
   visc.alpha = values[1];
   visc.beta = values[2];
@@ -437,8 +603,19 @@ void PairSPHGranular::read_restart_settings(FILE *fp)
 
 std::vector<double> PairSPHGranular::rate_settings() const
 {
-  return {h, visc.alpha, visc.beta, double(visc.sound), double(visc.walls),
-          double(corrected_gradient), double(wall_stress_mode), double(wall_normal)};
+  std::vector<double> settings{h,
+                               visc.alpha,
+                               visc.beta,
+                               double(visc.sound),
+                               double(visc.walls),
+                               double(corrected_gradient),
+                               double(wall_stress_mode),
+                               double(wall_normal)};
+  for (const FrictionWall &w : friction_walls) {
+    settings.push_back(w.group);
+    settings.push_back(w.mu);
+  }
+  return settings;
 }
 
 void *PairSPHGranular::extract(const char *name, int &dim)

@@ -36,6 +36,8 @@ class PairSPHGranular : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
 
   // the settings the rates depend on: the integrator continues a run with the
   // rates of the last step only if they are unchanged
@@ -47,6 +49,14 @@ class PairSPHGranular : public Pair {
   int corrected_gradient;                     // renormalise the velocity gradient
   int wall_normal;                            // walls enter drho, grad_v along their normal
   GRANSPH::WallSums::Mode wall_stress_mode;   // eq. 8
+  // walls with a friction of their own (wall/friction): the dummies of group `group`
+  // (an index into LAMMPS' groups) limit the grains' tangential force at mu times the
+  // normal one, mu = tan(delta) (0: slip); the last entry that holds a dummy counts
+  struct FrictionWall {
+    int group;
+    double mu;
+  };
+  std::vector<FrictionWall> friction_walls;
   FixSPHIntegrate *integrator;
 
   // defaults of visc, chosen by the convergence study (doc/pair_sph_granular.rst)
@@ -57,17 +67,24 @@ class PairSPHGranular : public Pair {
   void tally_virial(int i, const double *vir);
   void pack_wall_normals(double *out, int n) const;
   void check_wall_normals() const;
+  int pack_wall_friction(double *out, const double *normals, int n) const;
+  void stop_if_unnormalled(int i);
+  void forward_comm_friction_slide();
 
  private:
   int nmax;
   // what the pairs read, per atom, owned and ghost
   GRANSPH::PairParticle *particles;
-  double *normals;    // with wall/gradient normal: pack_wall_normals()
+  double *normals;    // with wall/gradient normal or wall/friction: pack_wall_normals()
+  double *friction;   // with wall/friction: pack_wall_friction()
+  double *slide;      // with wall/friction: 4 per atom, a grain's share and slide direction
 
   void grow(int n);
   void pack_particles(int from, int to);
   template <class Particles> void check_no_coincident(const Particles &p);
-  template <class Particles> void walls(const Particles &p);
+  template <class Particles> void walls(const Particles &p, bool with_forces);
+  template <class Particles> void wall_forces(const Particles &p);
+  template <class Particles> void add_wall_force(const Particles &p, int d);
   template <class Particles> void grains(const Particles &p);
 };
 

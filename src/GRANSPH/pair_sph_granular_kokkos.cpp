@@ -23,6 +23,9 @@ using namespace LAMMPS_NS;
 using FSI = FixSPHIntegrate;
 
 namespace {
+// values per grain of how it slides on walls with a friction of their own
+constexpr int SLIDE = GRANSPH::SLIDE_VALUES;
+
 // the virial of particle i into the reduction and, if wanted, into its per-atom entry
 template <class VirialView>
 KOKKOS_INLINE_FUNCTION void add_virial(EV_FLOAT &sum, const VirialView &vatom, bool want_vatom,
@@ -31,6 +34,20 @@ KOKKOS_INLINE_FUNCTION void add_virial(EV_FLOAT &sum, const VirialView &vatom, b
   for (int k = 0; k < 6; ++k) sum.v[k] += vir[k];
   if (want_vatom)
     for (int k = 0; k < 6; ++k) vatom(i, k) += vir[k];
+}
+
+// the force of the grains on dummy particle d (eq. 9) into f, its virial into the
+// reduction
+template <class Particles, class ForceView, class VirialView>
+KOKKOS_INLINE_FUNCTION void add_dummy_force(const Particles &p, int d, const ForceView &f,
+                                            double ftm2v, bool want_virial, EV_FLOAT &sum,
+                                            const VirialView &vatom, bool want_vatom)
+{
+  double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  double fd[3];
+  GRANSPH::wall_force(p, d, fd, want_virial ? vir : nullptr);
+  for (int a = 0; a < 3; ++a) f(d, a) += fd[a] / ftm2v;
+  add_virial(sum, vatom, want_vatom, d, vir);
 }
 }    // namespace
 
@@ -111,9 +128,23 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   p.visc = visc;
   p.wall_normal = wall_normal != 0;
   p.shape_sums = corrected_gradient != 0;
-  if (wall_normal) {
-    update_wall_normals(nall);
+  const bool limited = fix.wallbit && !friction_walls.empty();
+  p.wall_friction = limited;
+  if (wall_normal || limited) {
+    const int unnormalled = update_wall_normals(nall, limited);
+    if (limited && update->setupflag) stop_if_unnormalled(unnormalled);
     p.normals = k_normals.template view<DeviceType>();
+  }
+  if (limited) {
+    if ((int) k_slide.extent(0) < 4 * nall) {    // held, until a grain has slid
+      k_slide = decltype(k_slide)("pair:slide", SLIDE * atom->nmax);
+      auto host = k_slide.view_host();
+      for (int k = 0; k < SLIDE * atom->nmax; ++k) host(k) = k % SLIDE == 0 ? 1.0 : 0.0;
+      k_slide.template modify<LMPHostType>();
+    }
+    k_slide.template sync<DeviceType>();
+    p.friction_mu = k_friction.template view<DeviceType>();
+    p.friction_slide = k_slide.template view<DeviceType>();
   }
 
   if (update->setupflag) {    // no two interacting particles on one place
@@ -130,7 +161,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
     stop_if_coincident(found);
   }
   if (fix.wallbit) {
-    walls(p, kk);
+    walls(p, kk, !limited);
     kk.k_state.template modify<DeviceType>();
     kk.k_start.template modify<DeviceType>();
     fix.forward_comm_state();
@@ -139,6 +170,12 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   grains(p, kk);
   kk.k_rates.template modify<DeviceType>();
   kk.k_state.template modify<DeviceType>();
+  if (limited) {
+    k_slide.template modify<DeviceType>();
+    forward_comm_friction_slide();
+    k_slide.template sync<DeviceType>();
+    wall_forces(p);
+  }
   atomKK->modified(execution_space, datamask_modify);
   if (vflag_atom) {
     k_vatom.template modify<DeviceType>();
@@ -146,18 +183,79 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   }
 }
 
-// The wall normals on the device: packed on the host when the atoms may have changed
-// places (a run's setup, a neighbour list build) or the arrays grew; a step between
-// builds copies nothing.
-template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::update_wall_normals(int nall)
+// The wall normals (and with `limited` the dummies' friction) on the device: packed on
+// the host when the atoms may have changed places (a run's setup, a neighbour list build)
+// or the arrays grew; a step between builds copies nothing. Returns what
+// pack_wall_friction does (-1 when it did not run).
+template <class DeviceType>
+int PairSPHGranularKokkos<DeviceType>::update_wall_normals(int nall, bool limited)
 {
-  const bool grown = (int) k_normals.extent(0) < 3 * nall;
-  if (!grown && !update->setupflag && neighbor->ago != 0) return;
-  if (grown) k_normals = decltype(k_normals)("pair:normals", 3 * atom->nmax);
-  atomKK->sync(Host, MASK_MASK);    // pack_wall_normals reads the roles on the host
+  const bool grown = (int) k_normals.extent(0) < 3 * nall ||
+      (limited && (int) k_friction.extent(0) < nall);
+  if (!grown && !update->setupflag && neighbor->ago != 0) return -1;
+  if (grown) {
+    k_normals = decltype(k_normals)("pair:normals", 3 * atom->nmax);
+    if (limited) k_friction = decltype(k_friction)("pair:friction", atom->nmax);
+  }
+  atomKK->sync(Host, MASK_MASK);    // the roles are read on the host
   pack_wall_normals(k_normals.view_host().data(), nall);
   k_normals.template modify<LMPHostType>();
   k_normals.template sync<DeviceType>();
+  if (!limited) return -1;
+  const int unnormalled =
+      pack_wall_friction(k_friction.view_host().data(), k_normals.view_host().data(), nall);
+  k_friction.template modify<LMPHostType>();
+  k_friction.template sync<DeviceType>();
+  return unnormalled;
+}
+
+template <class DeviceType>
+int PairSPHGranularKokkos<DeviceType>::pack_forward_comm(int n, int *list, double *buf,
+                                                         int /*pbc_flag*/, int * /*pbc*/)
+{
+  k_slide.sync_host();
+  auto slide = k_slide.view_host();
+  for (int k = 0; k < n; ++k)
+    for (int c = 0; c < SLIDE; ++c) buf[SLIDE * k + c] = slide(SLIDE * list[k] + c);
+  return SLIDE * n;
+}
+
+template <class DeviceType>
+void PairSPHGranularKokkos<DeviceType>::unpack_forward_comm(int n, int first, double *buf)
+{
+  k_slide.sync_host();
+  auto slide = k_slide.view_host();
+  for (int k = 0; k < n; ++k)
+    for (int c = 0; c < SLIDE; ++c) slide(SLIDE * (first + k) + c) = buf[SLIDE * k + c];
+  k_slide.modify_host();
+}
+
+template <class DeviceType>
+int PairSPHGranularKokkos<DeviceType>::pack_forward_comm_device(
+    int n, const typename GRANSPHCompat::KokkosTypes<DeviceType>::SendList &sendlist,
+    GRANSPHCompat::tdual_comm_buffer &k_buf)
+{
+  auto buf = k_buf.view<DeviceType>();
+  auto slide = k_slide.template view<DeviceType>();
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<DeviceType>(0, n), LAMMPS_LAMBDA(const int k) {
+        const int j = sendlist(k);
+        for (int c = 0; c < SLIDE; ++c) buf(SLIDE * k + c) = slide(SLIDE * j + c);
+      });
+  return SLIDE * n;
+}
+
+template <class DeviceType>
+void PairSPHGranularKokkos<DeviceType>::unpack_forward_comm_device(
+    int n, int first, GRANSPHCompat::tdual_comm_buffer &k_buf)
+{
+  auto buf = k_buf.view<DeviceType>();
+  auto slide = k_slide.template view<DeviceType>();
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<DeviceType>(0, n), LAMMPS_LAMBDA(const int k) {
+        for (int c = 0; c < SLIDE; ++c) slide(SLIDE * (first + k) + c) = buf(SLIDE * k + c);
+      });
+  k_slide.template modify<DeviceType>();
 }
 
 // the pair data of atoms [from, to); an atom that is neither grain nor dummy massless
@@ -196,11 +294,11 @@ void PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int f
 }
 
 // dummy-particle stresses (eq. 8), with the wall acceleration from the velocity
-// change since the last evaluation, and the grains' forces on them (eq. 9), which
-// need a wall's own new stress only
+// change since the last evaluation, and with_forces the grains' forces on them (eq. 9),
+// which need a wall's own new stress only
 template <class DeviceType>
 void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> &p,
-                                              SPHStateKokkos &kk)
+                                              SPHStateKokkos &kk, bool with_forces)
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
   auto particles = d_particles;
@@ -216,6 +314,7 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
   const int stepping = !update->setupflag;
   const double inv_dt = stepping ? 1.0 / update->dt : 0.0;
   const GRANSPH::WallSums::Mode mode = wall_stress_mode;
+  const int forces = with_forces;
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
       ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
@@ -229,12 +328,30 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
         const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
         particles(d).sigma = sums.stress(g_minus_a, mode);
         particles(d).sigma.store(&state(d, FSI::SIGMA));
-        if (!sums.has_neighbours()) return;
-        double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-        double fd[3];
-        GRANSPH::wall_force(p, d, fd, want_virial ? vir : nullptr);
-        for (int a = 0; a < 3; ++a) f(d, a) += fd[a] / ftm2v;
-        add_virial(sum, vatom, want_vatom, d, vir);
+        if (forces && sums.has_neighbours())
+          add_dummy_force(p, d, f, ftm2v, want_virial, sum, vatom, want_vatom);
+      },
+      ev);
+  if (vflag_global)
+    for (int k = 0; k < 6; ++k) virial[k] += ev.v[k];
+}
+
+// the grains' forces on the dummy particles (eq. 9), once it is known how the grains
+// slide on the walls with a friction of their own (wall/friction)
+template <class DeviceType>
+void PairSPHGranularKokkos<DeviceType>::wall_forces(const DeviceParticles<DeviceType> &p)
+{
+  auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
+  auto f = atomKK->k_f.template view<DeviceType>();
+  auto vatom = k_vatom.template view<DeviceType>();
+  const int want_virial = vflag_either, want_vatom = vflag_atom;
+  const double ftm2v = force->ftm2v;
+  EV_FLOAT ev;
+  Kokkos::parallel_reduce(
+      ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
+      LAMMPS_LAMBDA(const int ii, EV_FLOAT &sum) {
+        const int d = ilist(ii);
+        if (p.wall(d)) add_dummy_force(p, d, f, ftm2v, want_virial, sum, vatom, want_vatom);
       },
       ev);
   if (vflag_global)
@@ -254,6 +371,8 @@ void PairSPHGranularKokkos<DeviceType>::grains(const DeviceParticles<DeviceType>
   const int want_virial = vflag_either, want_vatom = vflag_atom;
   const double ftm2v = force->ftm2v;
   const int corrected = corrected_gradient, dim = domain->dimension;
+  const bool limited = p.wall_friction;
+  auto slide = k_slide.template view<DeviceType>();
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
       ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
@@ -261,7 +380,11 @@ void PairSPHGranularKokkos<DeviceType>::grains(const DeviceParticles<DeviceType>
         const int i = ilist(ii);
         if (!p.granular(i)) return;
         double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-        GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, want_virial ? vir : nullptr);
+        double s[SLIDE] = {1.0, 0.0, 0.0, 0.0};
+        GRANSPH::ParticleRates r =
+            GRANSPH::granular_rates(p, i, want_virial ? vir : nullptr, limited ? s : nullptr);
+        if (limited)
+          for (int k = 0; k < SLIDE; ++k) slide(SLIDE * i + k) = s[k];
         if (corrected) r.correct_gradient(dim);
         state(i, FSI::VISC_PRESSURE) = r.viscous_pressure();
         const double m = p.particle(i).mass;

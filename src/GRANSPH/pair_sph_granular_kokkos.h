@@ -21,7 +21,8 @@ PairStyle(sph/granular/kk/host,PairSPHGranularKokkos<LMPHostType>);
 
 namespace LAMMPS_NS {
 
-template <class DeviceType> class PairSPHGranularKokkos : public PairSPHGranular {
+template <class DeviceType>
+class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
  public:
   typedef DeviceType device_type;
   typedef ArrayTypes<DeviceType> AT;
@@ -30,20 +31,33 @@ template <class DeviceType> class PairSPHGranularKokkos : public PairSPHGranular
   ~PairSPHGranularKokkos() override;
   void compute(int, int) override;
   void init_style() override;
+  // how the grains slide on walls with a friction of their own, to the ghosts: on the
+  // device, or through the host when comm/kokkos takes the classic path
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  GRANSPH_KOKKOS_PAIR_FORWARD_COMM
+  int pack_forward_comm_device(int,
+                               const typename GRANSPHCompat::KokkosTypes<DeviceType>::SendList &,
+                               GRANSPHCompat::tdual_comm_buffer &);
+  void unpack_forward_comm_device(int, int, GRANSPHCompat::tdual_comm_buffer &);
 
   // device kernels (public: CUDA lambdas may not live in private members)
   void pack_particles(SPHStateKokkos &kk, int from, int to);
-  void walls(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
+  void walls(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk, bool with_forces);
+  void wall_forces(const DeviceParticles<DeviceType> &p);
   void grains(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
 
  private:
   GRANSPHCompat::tdual_virial k_vatom;
   Kokkos::View<GRANSPH::PairParticle *, DeviceType> d_particles;    // owned and ghost atoms
-  // with wall/gradient normal, 3 per atom (pack_wall_normals), copied to the device
-  // when atoms may have moved between ranks or in memory
-  Kokkos::DualView<double *, DeviceType> k_normals;
+  // with wall/gradient normal or wall/friction, 3 per atom (pack_wall_normals), and with
+  // wall/friction the dummies' friction coefficients (pack_wall_friction), copied to the
+  // device when atoms may have moved between ranks or in memory
+  Kokkos::DualView<double *, DeviceType> k_normals, k_friction;
+  // with wall/friction, 4 per atom: a grain's share and slide direction
+  Kokkos::DualView<double *, DeviceType> k_slide;
 
-  void update_wall_normals(int nall);
+  int update_wall_normals(int nall, bool limited);
 };
 
 }    // namespace LAMMPS_NS

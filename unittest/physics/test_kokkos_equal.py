@@ -1,7 +1,8 @@
 """The /kk styles on 2 OpenMP threads reproduce the plain styles to round-off:
 positions, velocities, density and stress after a few hundred steps of the
 column collapse (elastoplastic, dummy walls; also with the walls' velocity along
-their normal only, from the dummies' centre or their own normals), the jet collision (phase change), and what compute
+their normal only, from the dummies' centre or their own normals, and with a floor of
+a friction of its own), the jet collision (phase change), and what compute
 sph/stress/atom makes of the column's stress."""
 
 import os
@@ -16,6 +17,7 @@ CASES = [
     ("column_collapse", {"steps": 300}),
     ("column_collapse", {"steps": 300, "pair_options": "wall/gradient normal"}),
     ("column_collapse", {"steps": 300, "pair_options": "wall/gradient normal", "normals": 1}),
+    ("column_collapse", {"steps": 300, "pair_options": "wall/friction floor 20", "normals": 1}),
     ("jet_collision", {"steps": 300, "dx": 0.016}),
 ]
 KOKKOS = ["-k", "on", "t", "2", "-sf", "kk"]

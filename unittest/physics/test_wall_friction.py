@@ -1,0 +1,103 @@
+"""Walls with a friction of their own (pair_style sph/granular wall/friction): a sand
+layer on a floor of interface friction angle delta (in.wall_friction)
+
+- on a slope, holds at delta - 1.5 degrees and slides at delta + 1.5 degrees, for layers
+  of 1 and 4 particles, both models, strips 4 to 16 columns wide, dx 0.02 and 0.01 m;
+- set sliding at 1 m/s on the level floor, is pushed back with the floor's tangential
+  force at tan(delta) times its normal force (within 3% for a single layer) and
+  decelerates at g tan(delta) (within 5%);
+- on a slip floor keeps its speed within 1% over 0.5 s;
+- on a floor of two halves of different delta, each half gives its own friction;
+- gives the same history on 1 and 2 MPI ranks (the grains' shares of the friction
+  reach the ghosts).
+The rough floor (no wall/friction) is tested unchanged by test_slope.py and test_slide.py."""
+
+import math
+import os
+import tempfile
+
+import numpy as np
+
+import gransph_run
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+G = 9.81
+
+
+def run(tmp, ranks=1, **variables):
+    """the columns of wall_friction.txt: t, vx, fx1, fz1, fx2, fz2"""
+    gransph_run.run(os.path.join(HERE, "in.wall_friction"), variables, ranks=ranks, cwd=tmp)
+    return np.loadtxt(os.path.join(tmp, "wall_friction.txt"), unpack=True)
+
+
+def slope(t, v):
+    """the mean rate of change of v over the second half of the record"""
+    late = t >= 0.5 * t[-1]
+    return np.polyfit(t[late], v[late], 1)[0]
+
+
+def sliding(t, v, v0):
+    """the record's part while the layer slides between 0.9 and 0.3 of v0"""
+    return (v < 0.9 * v0) & (v > 0.3 * v0)
+
+
+check = gransph_run.Checks()
+with tempfile.TemporaryDirectory() as tmp:
+    # hold and slide on a slope
+    cases = [("elastoplastic", 15, 1, 0.02, 6), ("elastoplastic", 25, 1, 0.02, 6),
+             ("elastoplastic", 15, 4, 0.02, 6), ("elastoplastic", 25, 4, 0.02, 6),
+             ("elastoplastic", 25, 1, 0.02, 4), ("elastoplastic", 25, 1, 0.02, 16),
+             ("elastoplastic", 15, 1, 0.01, 6), ("phasechange", 15, 1, 0.02, 6),
+             ("phasechange", 25, 4, 0.02, 6)]
+    for model, delta, layers, dx, width in cases:
+        case = f"{model}, delta {delta}, {layers} layer(s), dx {dx}, {width} columns"
+        below, above = delta - 1.5, delta + 1.5
+        t, v, *_ = run(tmp, model=model, delta1=delta, layers=layers, dx=dx, width=width,
+                       theta=below)
+        a = slope(t, v)
+        check(f"{case}: holds at {below} deg", abs(v[-1]) < 0.01 and abs(a) < 0.02,
+              f"v {v[-1]:.2e} m/s, a {a:.2e} m/s^2")
+        t, v, *_ = run(tmp, model=model, delta1=delta, layers=layers, dx=dx, width=width,
+                       theta=above)
+        a = slope(t, v)
+        a_free = G * (math.sin(math.radians(above)) -
+                      math.tan(math.radians(delta)) * math.cos(math.radians(above)))
+        check(f"{case}: slides at {above} deg", a > 0.5 * a_free,
+              f"a {a:.3f} m/s^2 (sliding at the wall's friction {a_free:.3f})")
+
+    # a layer set sliding on the level floor
+    for delta, layers, tolerance in ((15, 1, 0.03), (25, 1, 0.03), (15, 4, 0.05), (25, 4, 0.05)):
+        t, v, fx1, fz1, fx2, fz2 = run(tmp, delta1=delta, layers=layers, v0=1.0, tmeas=0.5)
+        window = sliding(t, v, 1.0)
+        assert window.sum() > 10, "the layer did not slow down through the window"
+        mu = math.tan(math.radians(delta))
+        # the grains push the floor down (fz < 0) and drag it along (fx > 0)
+        ratio = (fx1[window] + fx2[window]).sum() / -(fz1[window] + fz2[window]).sum()
+        decel = -np.polyfit(t[window], v[window], 1)[0] / G
+        case = f"delta {delta}, {layers} layer(s) sliding"
+        check(f"{case}: floor's friction tan(delta) = {mu:.4f} within {100 * tolerance:.0f}%",
+              abs(ratio / mu - 1.0) < tolerance, f"{ratio:.4f}")
+        check(f"{case}: decelerates at g tan(delta) within 5%", abs(decel / mu - 1.0) < 0.05,
+              f"{decel:.4f} g")
+
+    # a slip floor
+    for layers in (1, 4):
+        t, v, *_ = run(tmp, delta1="slip", layers=layers, v0=1.0, tmeas=0.5)
+        check(f"slip floor, {layers} layer(s): keeps its speed over {t[-1]:.2f} s within 1%",
+              t[-1] >= 0.5 and np.max(np.abs(v - 1.0)) < 0.01,
+              f"speed between {v.min():.4f} and {v.max():.4f} m/s")
+
+    # two halves of the floor, delta 15 and 25
+    t, v, fx1, fz1, fx2, fz2 = run(tmp, delta1=15, delta2=25, v0=1.0, tmeas=0.2)
+    window = sliding(t, v, 1.0)
+    for half, fx, fz, delta in ((1, fx1, fz1, 15), (2, fx2, fz2, 25)):
+        mu, ratio = math.tan(math.radians(delta)), fx[window].sum() / -fz[window].sum()
+        check(f"two floors: half {half} gives its own friction tan({delta}) = {mu:.4f} within 3%",
+              abs(ratio / mu - 1.0) < 0.03, f"{ratio:.4f}")
+    # 1 against 2 ranks, a short run (round-off grows over a long one), sliding at once
+    records = [run(tmp, ranks, delta1=15, delta2=25, v0=1.0, load=300, tmeas=0.01)
+               for ranks in (1, 2)]
+    diff = max(np.max(np.abs(a - b)) / max(np.max(np.abs(a)), 1e-300)
+               for a, b in zip(records[0], records[1]))
+    check("1 and 2 ranks: the same history", diff < 1e-9, f"largest relative difference {diff:.1e}")
+check.finish()
