@@ -45,8 +45,8 @@ std::vector<double> pair_settings(const Force *force)
 
 FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), state(nullptr), rates(nullptr), start(nullptr), wallbit(0),
-    rho_init(0.0), cfl(0.2), geostatic_flag(0), surface_height(0.0), restored(0), last_dt(0.0),
-    fresh_start(nullptr)
+    rho_init(0.0), cfl(0.2), cfl_sound_reference(1), geostatic_flag(0), surface_height(0.0),
+    restored(0), last_dt(0.0), fresh_start(nullptr)
 {
   const std::string style_name = std::string("fix ") + style;
   if (narg < 5) error->all(FLERR, "Illegal {} command: need a material file and name", style_name);
@@ -74,6 +74,11 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
         cfl = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
         if (cfl <= 0.0 || cfl > 1.0) error->all(FLERR, "{}: cfl must be in (0, 1] or none", style_name);
       }
+    } else if (key == "cfl/sound") {
+      const std::string value = arg[iarg + 1];
+      if (value != "local" && value != "reference")
+        error->all(FLERR, "{}: cfl/sound must be local or reference, not {}", style_name, value);
+      cfl_sound_reference = value == "reference";
     } else if (key == "matching" || key == "plastic") {
       if (!utils::strmatch(style, "^sph/elastoplastic"))
         error->all(FLERR, "{}: keyword {} is for fix sph/elastoplastic only", style_name, key);
@@ -303,7 +308,8 @@ void FixSPHIntegrate::gravity_vector(double *g) const
 }
 
 /* ----------------------------------------------------------------------
-   eq. 19: dt = C min(sqrt(h / max|a|), h / c) with c = sqrt(E / rho)
+   eq. 19: dt = C min(sqrt(h / max|a|), h / c) with c = sqrt(E / rho), rho the
+   grains' (local) or the initial density (reference)
 ------------------------------------------------------------------------- */
 
 void FixSPHIntegrate::reset_cfl_timestep()
@@ -322,7 +328,8 @@ void FixSPHIntegrate::reset_cfl_timestep()
     const double m = rmass ? rmass[i] : mass[type[i]];
     const double a2 = (f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]) / (m * m);
     local[0] = MAX(local[0], a2);
-    local[1] = MAX(local[1], GRANSPH::sound_speed(material.E, state[i][RHO]));
+    const double rho = GRANSPH::cfl_density(state[i][RHO], rho_init, cfl_sound_reference);
+    local[1] = MAX(local[1], GRANSPH::sound_speed(material.E, rho));
   }
   double global[2];
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);

@@ -78,6 +78,7 @@ class FixSPHIntegrate : public Fix {
  protected:
   double rho_init;      // initial density of all particles (material rho0 by default)
   double cfl;           // CFL factor of eq. 19; 0 keeps the LAMMPS timestep
+  int cfl_sound_reference;    // eq. 19's sound speed at rho_init, not at each grain's density
   int geostatic_flag;   // initialise a geostatic stress below surface_height
   double surface_height;
   int restored;         // state came from a restart file

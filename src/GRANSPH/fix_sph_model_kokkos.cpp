@@ -235,6 +235,8 @@ void FixSPHModelKokkos<DeviceType, Model>::reset_cfl_timestep()
   const int groupbit = this->groupbit;
   const int use_rmass = this->atom->rmass != nullptr;
   const double E = this->material.E;
+  const double rho_ref = this->rho_init;
+  const bool reference = this->cfl_sound_reference;
   double local[2] = {0.0, 0.0};    // max |a|^2, max c
   Kokkos::parallel_reduce(
       Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
@@ -249,7 +251,8 @@ void FixSPHModelKokkos<DeviceType, Model>::reset_cfl_timestep()
       Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
       LAMMPS_LAMBDA(const int i, double &cmax) {
         if (!(mask(i) & groupbit)) return;
-        const double c = GRANSPH::sound_speed(E, state(i, FSI::RHO));
+        const double c =
+            GRANSPH::sound_speed(E, GRANSPH::cfl_density(state(i, FSI::RHO), rho_ref, reference));
         if (c > cmax) cmax = c;
       },
       Kokkos::Max<double>(local[1]));

@@ -88,6 +88,14 @@ KOKKOS_INLINE_FUNCTION bool bad_state(double sum, double rho)
   return !(sum - sum == 0.0) || !(rho > 0.0);
 }
 
+// The density of eq. 19's sound speed sqrt(E / rho) for a grain of density rho: its own
+// (local), or the material's initial density (reference: a dilated grain, whose few and
+// distant neighbours make it no stiffer, does not shorten the step).
+KOKKOS_INLINE_FUNCTION double cfl_density(double rho, double rho_ref, bool reference)
+{
+  return reference ? rho_ref : rho;
+}
+
 // Eq. 19: dt = C min(sqrt(h / max|a|), h / max c).
 KOKKOS_INLINE_FUNCTION double cfl_timestep(double cfl, double h, double amax, double cmax)
 {

@@ -70,6 +70,8 @@ CASES = [
     ("walls = fix group", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 walls sand"),
      "walls group must differ"),
     ("bad cfl", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 cfl 2"), "cfl must be in"),
+    ("bad cfl sound speed", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 cfl/sound bulk"),
+     "cfl/sound must be local or reference, not bulk"),
     ("bad plastic step", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 plastic foo"),
      "plastic must be return or paper"),
     ("plastic for the phase-change model",
