@@ -90,5 +90,5 @@ void ComputeSPHStressAtom::compute_peratom()
 
 double ComputeSPHStressAtom::memory_usage()
 {
-  return (double) nmax * NCOLS * sizeof(double);
+  return (double) nmax * (int) NCOLS * sizeof(double);
 }

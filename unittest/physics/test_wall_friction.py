@@ -8,8 +8,9 @@ layer on a floor of interface friction angle delta (in.wall_friction)
   decelerates at g tan(delta) (within 5%);
 - on a slip floor keeps its speed within 1% over 0.5 s;
 - on a floor of two halves of different delta, each half gives its own friction;
-- gives the same history on 1 and 2 MPI ranks (the grains' shares of the friction
-  reach the ghosts).
+- gives the same history on 1 and 2 MPI ranks (how the grains slide reaches the
+  ghosts), and with the /kk styles on 2 threads (LAMMPS 29Sep2021 under Kokkos cannot
+  pass the floor's normals to the periodic images: there the pair style refuses).
 The rough floor (no wall/friction) is tested unchanged by test_slope.py and test_slide.py."""
 
 import math
@@ -22,11 +23,13 @@ import gransph_run
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 G = 9.81
+KOKKOS = ["-k", "on", "t", "2", "-sf", "kk"]
 
 
-def run(tmp, ranks=1, **variables):
+def run(tmp, ranks=1, args=(), **variables):
     """the columns of wall_friction.txt: t, vx, fx1, fz1, fx2, fz2"""
-    gransph_run.run(os.path.join(HERE, "in.wall_friction"), variables, ranks=ranks, cwd=tmp)
+    gransph_run.run(os.path.join(HERE, "in.wall_friction"), variables, ranks=ranks, args=args,
+                    cwd=tmp)
     return np.loadtxt(os.path.join(tmp, "wall_friction.txt"), unpack=True)
 
 
@@ -97,7 +100,19 @@ with tempfile.TemporaryDirectory() as tmp:
     # 1 against 2 ranks, a short run (round-off grows over a long one), sliding at once
     records = [run(tmp, ranks, delta1=15, delta2=25, v0=1.0, load=300, tmeas=0.01)
                for ranks in (1, 2)]
-    diff = max(np.max(np.abs(a - b)) / max(np.max(np.abs(a)), 1e-300)
-               for a, b in zip(records[0], records[1]))
+    def difference(a, b):
+        return max(np.max(np.abs(x - y)) / max(np.max(np.abs(x)), 1e-300) for x, y in zip(a, b))
+    assert np.min(records[0][1]) < 0.99, "the layer did not slow down: nothing was compared"
+    diff = difference(records[0], records[1])
     check("1 and 2 ranks: the same history", diff < 1e-9, f"largest relative difference {diff:.1e}")
+    try:
+        kk = run(tmp, delta1=15, delta2=25, v0=1.0, load=300, tmeas=0.01, args=KOKKOS)
+        diff = difference(records[0], kk)
+        check("plain and /kk: the same history", diff < 1e-9,
+              f"largest relative difference {diff:.1e}")
+    except RuntimeError as error:
+        output = gransph_run.LAST_OUTPUT
+        check("/kk refused by LAMMPS 29Sep2021 + Kokkos (the normals cannot reach ghosts)",
+              "LAMMPS (29 Sep 2021" in output and
+              "per-atom wall normals need LAMMPS newer than 29 Sep 2021" in output, str(error))
 check.finish()
