@@ -5,7 +5,9 @@ layer on a floor of interface friction angle delta (in.wall_friction)
   of 1 and 4 particles, both models, strips 4 to 16 columns wide, dx 0.02 and 0.01 m;
 - set sliding at 1 m/s on the level floor, is pushed back with the floor's tangential
   force at tan(delta) times its normal force (within 3% for a single layer) and
-  decelerates at g tan(delta) (within 5%);
+  decelerates at g tan(delta) (within 5%); down a slope of 10 degrees at
+  g (tan(delta) cos(theta) - sin(theta)) (within 5%); pushed at 5 cm/s 1.5 degrees below
+  delta, stops and holds;
 - on a slip floor keeps its speed within 1% over 0.5 s;
 - on a floor of two halves of different delta, each half gives its own friction;
 - gives the same history on 1 and 2 MPI ranks (how the grains slide reaches the
@@ -82,6 +84,23 @@ with tempfile.TemporaryDirectory() as tmp:
               abs(ratio / mu - 1.0) < tolerance, f"{ratio:.4f}")
         check(f"{case}: decelerates at g tan(delta) within 5%", abs(decel / mu - 1.0) < 0.05,
               f"{decel:.4f} g")
+
+    # a block sliding down a slope, and a push below the slide angle
+    theta = 10.0
+    for layers in (1, 4):
+        t, v, *_ = run(tmp, delta1=25, layers=layers, theta=theta, v0=1.0, tmeas=0.5)
+        window = sliding(t, v, 1.0)
+        assert window.sum() > 10, "the layer did not slow down through the window"
+        expected = G * (math.tan(math.radians(25)) * math.cos(math.radians(theta)) -
+                        math.sin(math.radians(theta)))
+        decel = -np.polyfit(t[window], v[window], 1)[0]
+        check(f"delta 25, {layers} layer(s) sliding down {theta:.0f} deg: decelerates at "
+              f"g (tan(delta) cos(theta) - sin(theta)) = {expected:.3f} m/s^2 within 5%",
+              abs(decel / expected - 1.0) < 0.05, f"{decel:.3f} m/s^2")
+    t, v, *_ = run(tmp, delta1=25, theta=23.5, v0=0.05, tmeas=0.3)
+    a = slope(t, v)
+    check("delta 25, pushed at 5 cm/s at 23.5 deg: stops and holds",
+          abs(v[-1]) < 0.01 and abs(a) < 0.02, f"v {v[-1]:.2e} m/s, a {a:.2e} m/s^2")
 
     # a slip floor
     for layers in (1, 4):
