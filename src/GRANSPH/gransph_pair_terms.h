@@ -202,6 +202,9 @@ struct WallFrictionSums {
   double normal[3];    // sum_d (a_d . n_d) n_d
   double limit;        // sum_d mu_d (a_d . n_d)
 
+  // value k of a grain's SLIDE_VALUES before any evaluation: held (share 1, no direction)
+  KOKKOS_INLINE_FUNCTION static double held(int k) { return k % SLIDE_VALUES == 0 ? 1.0 : 0.0; }
+
   // the share of its tangential part that the walls carry: 1 while they hold the
   // grain, below 1 while it slides, 0 on slip walls
   KOKKOS_INLINE_FUNCTION double share() const

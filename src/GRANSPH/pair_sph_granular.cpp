@@ -5,7 +5,8 @@
    get their stress by extrapolation (eq. 8), pass it to their ghosts and get
    the force the grains exert on them (eq. 9); then the grains get their rates
    (eqs. 6, 7, 34, 35). With walls of a friction of their own the dummies get
-   their force after the grains, from how the grains slide on them. A full neighbour list: each particle sums over its own
+   their force after the grains, from how the grains slide on them. A full
+   neighbour list: each particle sums over its own
    neighbours into itself alone (gransph_neighbour_sums.h, shared with the
    Kokkos twin), in loops the compiler vectorises.
 ------------------------------------------------------------------------- */
@@ -275,14 +276,14 @@ void PairSPHGranular::grow(int n)
   if (!limited) return;
   friction = (double *) memory->smalloc(sizeof(double) * nmax, "pair:friction");
   slide = (double *) memory->smalloc(sizeof(double) * SLIDE * nmax, "pair:slide");
-  for (int k = 0; k < SLIDE * nmax; ++k) slide[k] = k % SLIDE == 0 ? 1.0 : 0.0;    // held
+  for (int k = 0; k < SLIDE * nmax; ++k) slide[k] = GRANSPH::WallFrictionSums::held(k);
 }
 
 // The friction coefficient mu of atoms [0, n) into `out`: that of the last wall/friction
 // entry whose group holds the dummy particle, -1 for rough walls and the others. Returns
 // an owned dummy of a wall with a friction of its own that has no normal (`normals`, as
 // pack_wall_normals writes them; the friction is taken against it), or -1.
-int PairSPHGranular::pack_wall_friction(double *out, const double *normals, int n) const
+int PairSPHGranular::pack_wall_friction(double *out, const double *unit_normals, int n) const
 {
   const int *mask = atom->mask, wallbit = integrator->wallbit;
   int missing = -1;
@@ -291,7 +292,7 @@ int PairSPHGranular::pack_wall_friction(double *out, const double *normals, int 
     if (!(mask[i] & wallbit)) continue;
     for (const FrictionWall &w : friction_walls)
       if (mask[i] & group->bitmask[w.group]) out[i] = w.mu;
-    const double *ni = &normals[3 * i];
+    const double *ni = &unit_normals[3 * i];
     if (out[i] >= 0.0 && ni[0] == 0.0 && ni[1] == 0.0 && ni[2] == 0.0 && missing < 0 &&
         i < atom->nlocal)
       missing = i;

@@ -67,7 +67,7 @@ class PairSPHGranular : public Pair {
   void tally_virial(int i, const double *vir);
   void pack_wall_normals(double *out, int n) const;
   void check_wall_normals() const;
-  int pack_wall_friction(double *out, const double *normals, int n) const;
+  int pack_wall_friction(double *out, const double *unit_normals, int n) const;
   void stop_if_unnormalled(int i);
   void forward_comm_friction_slide();
 

@@ -136,10 +136,10 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
     p.normals = k_normals.template view<DeviceType>();
   }
   if (limited) {
-    if ((int) k_slide.extent(0) < 4 * nall) {    // held, until a grain has slid
+    if ((int) k_slide.extent(0) < SLIDE * nall) {
       k_slide = decltype(k_slide)("pair:slide", SLIDE * atom->nmax);
       auto host = k_slide.view_host();
-      for (int k = 0; k < SLIDE * atom->nmax; ++k) host(k) = k % SLIDE == 0 ? 1.0 : 0.0;
+      for (int k = 0; k < SLIDE * atom->nmax; ++k) host(k) = GRANSPH::WallFrictionSums::held(k);
       k_slide.template modify<LMPHostType>();
     }
     k_slide.template sync<DeviceType>();
