@@ -122,13 +122,14 @@ build_kokkos_cuda() {
 
 # The LAMMPS packages GRANSPH needs: KOKKOS (the /kk styles), PLUGIN (loads us),
 # SPH (the sph/taitwater peer in bench/), GRANULAR (for comparisons), MOLECULE
-# (LAMMPS' test_fix_timestep harness skips every test without it).
+# (LAMMPS' test_fix_timestep harness skips every test without it), RIGID (fix rigid
+# moves bodies of dummy particles under the sand's load).
 lammps_cmake_args() {
   echo -G Ninja -D CMAKE_BUILD_TYPE=Release -D CMAKE_CXX_COMPILER_LAUNCHER=ccache \
     -D CMAKE_PREFIX_PATH="$GRANSPH_DEPS/kokkos" -D BUILD_SHARED_LIBS=on \
     -D BUILD_MPI=on -D BUILD_OMP=on -D LAMMPS_EXCEPTIONS=on \
     -D PKG_KOKKOS=on -D EXTERNAL_KOKKOS=on -D Kokkos_ENABLE_OPENMP=on \
-    -D PKG_PLUGIN=on -D PKG_SPH=on -D PKG_GRANULAR=on -D PKG_MOLECULE=on \
+    -D PKG_PLUGIN=on -D PKG_SPH=on -D PKG_GRANULAR=on -D PKG_MOLECULE=on -D PKG_RIGID=on \
     -D WITH_PNG=on -D WITH_JPEG=off -D WITH_FFMPEG=off -D WITH_GZIP=off
 }
 

@@ -410,14 +410,15 @@ unpack_lammps() {
 }
 
 # KOKKOS (the /kk styles; OpenMP, Debian's Kokkos), PLUGIN (loads us), SPH (the
-# sph/taitwater peer in bench/), GRANULAR, MOLECULE (the fix harness needs it);
+# sph/taitwater peer in bench/), GRANULAR, MOLECULE (the fix harness needs it), RIGID
+# (bodies of dummy particles moved by the sand);
 # the instruction set of tools/arch.sh (GRANSPH_ARCH).
 # LAMMPS since 2025 always has exceptions (no LAMMPS_EXCEPTIONS option any more).
 lammps_cmake_args() {
   echo -G Ninja -D CMAKE_BUILD_TYPE=Release -D CMAKE_CXX_COMPILER_LAUNCHER=ccache \
     -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=on \
     -D PKG_KOKKOS=on -D EXTERNAL_KOKKOS=on \
-    -D PKG_PLUGIN=on -D PKG_SPH=on -D PKG_GRANULAR=on -D PKG_MOLECULE=on \
+    -D PKG_PLUGIN=on -D PKG_SPH=on -D PKG_GRANULAR=on -D PKG_MOLECULE=on -D PKG_RIGID=on \
     -D WITH_PNG=off -D WITH_JPEG=off -D WITH_FFMPEG=off
 }
 lammps_stamp() {

@@ -34,9 +34,19 @@ class FixSPHIntegrate : public Fix {
   // RATES: what the pair style writes, and the acceleration of the same evaluation
   // that the next predictor uses. START: the start of the step for the corrector,
   // the wall velocity of the last evaluation, and STEPPED: 1 once the atom's rates
-  // (grains) or wall velocity (dummy particles) come from a step's evaluation.
+  // (grains) or wall velocity (dummy particles) come from a step's evaluation; WALL_F:
+  // the grains' force on a dummy particle in the last evaluation (the pair style's part
+  // of its f), which the setup of a run that continues the last repeats.
   enum { DRHO = 0, STRAIN = 1, SPIN = 7, ACC = 10, NRATES = 13 };
-  enum { V_START = 0, RHO_START = 3, SIGMA_START = 4, WALL_V = 10, STEPPED = 13, NSTART = 14 };
+  enum {
+    V_START = 0,
+    RHO_START = 3,
+    SIGMA_START = 4,
+    WALL_V = 10,
+    STEPPED = 13,
+    WALL_F = 14,
+    NSTART = 17
+  };
 
   FixSPHIntegrate(class LAMMPS *, int, char **);
   ~FixSPHIntegrate() override;
@@ -64,7 +74,8 @@ class FixSPHIntegrate : public Fix {
   // What sph/granular reads and writes.
   double **state;    // rho, sigma (xx yy zz xy xz yz), regime
   double **rates;    // drho/dt, strain rate (6), spin (xy xz yz), acceleration
-  double **start;    // v, rho, sigma at the start of the step; last wall velocity; stepped
+  double **start;    // v, rho, sigma at the start of the step; last wall velocity; stepped;
+                     // last wall force
   int wallbit;       // group bit of the dummy-wall particles (0: no walls)
   GranSPHMaterial material;
 
@@ -74,6 +85,10 @@ class FixSPHIntegrate : public Fix {
   virtual double mobilised_ratio(const GRANSPH::Sym3 &sigma) const = 0;
   virtual void sync_state_host() {}    // the plain fix keeps it there
   void gravity_vector(double *g) const;  // acceleration of the fix gravity on the grains
+  // At a run's setup: whether the run continues the last step's (its first step takes
+  // the rates, and the dummies the forces, of that step rather than of the setup
+  // evaluation)
+  bool continues_last_step() const { return fresh_start == nullptr; }
 
  protected:
   double rho_init;      // initial density of all particles (material rho0 by default)

@@ -464,6 +464,20 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
     wall_force<false, false>(p, d, force, vir);
 }
 
+// The force of the grains on a dummy particle for this evaluation: fd as computed, kept in
+// last (3 values) for the next run; or at the setup of a run that continues the last
+// (repeat), the force of the last step, so that a body the dummies belong to (fix rigid,
+// whose first half-kick takes the setup force) moves on as if the runs were one.
+KOKKOS_INLINE_FUNCTION void keep_or_repeat_wall_force(double *fd, double *last, bool repeat)
+{
+  for (int a = 0; a < 3; ++a) {
+    if (repeat)
+      fd[a] = last[a];
+    else
+      last[a] = fd[a];
+  }
+}
+
 }    // namespace GRANSPH
 
 #endif

@@ -211,15 +211,19 @@ template <class Particles> void PairSPHGranular::walls(const Particles &p, bool 
     const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
     particles[d].sigma = sums.stress(g_minus_a, wall_stress_mode);
     particles[d].sigma.store(&fix.state[d][FixSPHIntegrate::SIGMA]);
-    if (with_forces && sums.has_neighbours()) add_wall_force(p, d);
+    if (with_forces) add_wall_force(p, d, sums.has_neighbours());
   }
 }
 
-// the force of the grains on dummy particle d (eq. 9), and its virial
-template <class Particles> void PairSPHGranular::add_wall_force(const Particles &p, int d)
+// the force of the grains on dummy particle d (eq. 9; none without granular neighbours),
+// or the last step's at the setup of a run that continues it, and its virial
+template <class Particles>
+void PairSPHGranular::add_wall_force(const Particles &p, int d, bool has_grains)
 {
-  double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, fd[3];
-  GRANSPH::wall_force(p, d, fd, vflag_either ? vir : nullptr);
+  double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, fd[3] = {0.0, 0.0, 0.0};
+  if (has_grains) GRANSPH::wall_force(p, d, fd, vflag_either ? vir : nullptr);
+  const bool repeat = update->setupflag && integrator->continues_last_step();
+  GRANSPH::keep_or_repeat_wall_force(fd, &integrator->start[d][FixSPHIntegrate::WALL_F], repeat);
   for (int a = 0; a < 3; ++a) atom->f[d][a] += fd[a] / force->ftm2v;
   if (vflag_either) tally_virial(d, vir);
 }
@@ -230,7 +234,7 @@ template <class Particles> void PairSPHGranular::wall_forces(const Particles &p)
 {
   for (int ii = 0; ii < list->inum; ++ii) {
     const int d = list->ilist[ii];
-    if (p.wall(d)) add_wall_force(p, d);
+    if (p.wall(d)) add_wall_force(p, d, true);
   }
 }
 

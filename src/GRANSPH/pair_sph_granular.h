@@ -84,7 +84,7 @@ class PairSPHGranular : public Pair {
   template <class Particles> void check_no_coincident(const Particles &p);
   template <class Particles> void walls(const Particles &p, bool with_forces);
   template <class Particles> void wall_forces(const Particles &p);
-  template <class Particles> void add_wall_force(const Particles &p, int d);
+  template <class Particles> void add_wall_force(const Particles &p, int d, bool has_grains);
   template <class Particles> void grains(const Particles &p);
 };
 

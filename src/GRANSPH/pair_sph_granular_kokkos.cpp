@@ -36,16 +36,19 @@ KOKKOS_INLINE_FUNCTION void add_virial(EV_FLOAT &sum, const VirialView &vatom, b
     for (int k = 0; k < 6; ++k) vatom(i, k) += vir[k];
 }
 
-// the force of the grains on dummy particle d (eq. 9) into f, its virial into the
-// reduction
+// the force of the grains on dummy particle d (eq. 9; none without granular neighbours),
+// or the last step's (kept in `last`) at the setup of a run that continues it, into f;
+// its virial into the reduction
 template <class Particles, class ForceView, class VirialView>
-KOKKOS_INLINE_FUNCTION void add_dummy_force(const Particles &p, int d, const ForceView &f,
+KOKKOS_INLINE_FUNCTION void add_dummy_force(const Particles &p, int d, bool has_grains,
+                                            double *last, bool repeat, const ForceView &f,
                                             double ftm2v, bool want_virial, EV_FLOAT &sum,
                                             const VirialView &vatom, bool want_vatom)
 {
   double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  double fd[3];
-  GRANSPH::wall_force(p, d, fd, want_virial ? vir : nullptr);
+  double fd[3] = {0.0, 0.0, 0.0};
+  if (has_grains) GRANSPH::wall_force(p, d, fd, want_virial ? vir : nullptr);
+  GRANSPH::keep_or_repeat_wall_force(fd, last, repeat);
   for (int a = 0; a < 3; ++a) f(d, a) += fd[a] / ftm2v;
   add_virial(sum, vatom, want_vatom, d, vir);
 }
@@ -174,7 +177,8 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
     k_slide.template modify<DeviceType>();
     forward_comm_friction_slide();
     k_slide.template sync<DeviceType>();
-    wall_forces(p);
+    wall_forces(p, kk);
+    kk.k_start.template modify<DeviceType>();
   }
   atomKK->modified(execution_space, datamask_modify);
   if (vflag_atom) {
@@ -315,6 +319,7 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
   const double inv_dt = stepping ? 1.0 / update->dt : 0.0;
   const GRANSPH::WallSums::Mode mode = wall_stress_mode;
   const int forces = with_forces;
+  const int repeat = update->setupflag && integrator->continues_last_step();
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
       ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
@@ -328,8 +333,9 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
         const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
         particles(d).sigma = sums.stress(g_minus_a, mode);
         particles(d).sigma.store(&state(d, FSI::SIGMA));
-        if (forces && sums.has_neighbours())
-          add_dummy_force(p, d, f, ftm2v, want_virial, sum, vatom, want_vatom);
+        if (forces)
+          add_dummy_force(p, d, sums.has_neighbours(), &start(d, FSI::WALL_F), repeat, f, ftm2v,
+                          want_virial, sum, vatom, want_vatom);
       },
       ev);
   if (vflag_global)
@@ -339,19 +345,24 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
 // the grains' forces on the dummy particles (eq. 9), once it is known how the grains
 // slide on the walls with a friction of their own (wall/friction)
 template <class DeviceType>
-void PairSPHGranularKokkos<DeviceType>::wall_forces(const DeviceParticles<DeviceType> &p)
+void PairSPHGranularKokkos<DeviceType>::wall_forces(const DeviceParticles<DeviceType> &p,
+                                                    SPHStateKokkos &kk)
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
+  auto start = kk.k_start.template view<DeviceType>();
   auto f = atomKK->k_f.template view<DeviceType>();
   auto vatom = k_vatom.template view<DeviceType>();
   const int want_virial = vflag_either, want_vatom = vflag_atom;
   const double ftm2v = force->ftm2v;
+  const int repeat = update->setupflag && integrator->continues_last_step();
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
       ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
       LAMMPS_LAMBDA(const int ii, EV_FLOAT &sum) {
         const int d = ilist(ii);
-        if (p.wall(d)) add_dummy_force(p, d, f, ftm2v, want_virial, sum, vatom, want_vatom);
+        if (p.wall(d))
+          add_dummy_force(p, d, true, &start(d, FSI::WALL_F), repeat, f, ftm2v, want_virial, sum,
+                          vatom, want_vatom);
       },
       ev);
   if (vflag_global)

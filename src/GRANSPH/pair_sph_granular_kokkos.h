@@ -44,7 +44,7 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   // device kernels (public: CUDA lambdas may not live in private members)
   void pack_particles(SPHStateKokkos &kk, int from, int to);
   void walls(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk, bool with_forces);
-  void wall_forces(const DeviceParticles<DeviceType> &p);
+  void wall_forces(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
   void grains(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
 
  private:
