@@ -53,7 +53,10 @@ with tempfile.TemporaryDirectory() as tmp:
              ("elastoplastic", 15, 4, 0.02, 6), ("elastoplastic", 25, 4, 0.02, 6),
              ("elastoplastic", 25, 1, 0.02, 4), ("elastoplastic", 25, 1, 0.02, 16),
              ("elastoplastic", 15, 1, 0.01, 6), ("phasechange", 15, 1, 0.02, 6),
-             ("phasechange", 25, 4, 0.02, 6)]
+             ("phasechange", 25, 4, 0.02, 6), ("phasechange", 15, 1, 0.02, 4),
+             ("phasechange", 25, 1, 0.02, 16), ("elastoplastic", 25, 4, 0.01, 6),
+             ("elastoplastic", 25, 1, 0.01, 16), ("phasechange", 25, 1, 0.01, 6),
+             ("phasechange", 15, 4, 0.01, 16)]
     for model, delta, layers, dx, width in cases:
         case = f"{model}, delta {delta}, {layers} layer(s), dx {dx}, {width} columns"
         below, above = delta - 1.5, delta + 1.5
