@@ -1,9 +1,11 @@
 """examples/landslide runs: its site made by tools/terrain, read with the dummies' own
 normals, the barrier built on it, the sand placed on the bed; a short run keeps every
 grain and finite state (the fix stops on a non-finite one) and prints its result line;
-the same run on 2 MPI ranks gives the same state. (Not under Kokkos: LAMMPS 29Sep2021's
-Kokkos crashes reading the data file's WallNormals, in FixPropertyAtom::read_data_section,
-and the 2026 stack's root has no GDAL to make the site.)"""
+the same run on 2 MPI ranks gives the same state; with -var spring the barrier becomes a
+rigid body on a spring (fix rigid, fix spring), on 2 ranks. (Not under Kokkos: LAMMPS
+29Sep2021's Kokkos crashes reading the data file's WallNormals, in
+FixPropertyAtom::read_data_section, and the 2026 stack's root has no GDAL to make the
+site.)"""
 
 import os
 import re
@@ -23,6 +25,9 @@ with tempfile.TemporaryDirectory() as tmp:
         outputs[label] = gransph_run.run(os.path.join(EXAMPLE, "in.landslide"), VARIABLES,
                                          ranks=ranks, cwd=tmp)
         states[label] = gransph_run.read_dump(os.path.join(tmp, "landslide.dump"))
+    # the barrier on a spring (a rigid body), on 2 ranks
+    spring = gransph_run.run(os.path.join(EXAMPLE, "in.landslide"),
+                             dict(VARIABLES, spring=1000), ranks=2, cwd=tmp)
 out = outputs["plain"]
 checks = []
 moved = np.max(np.abs(states["plain"]["vx"])) > 1e-3
@@ -44,6 +49,9 @@ if result:
     checks.append(("grains placed on the bed", 300 < grains < 500))
     checks.append(("no grain lost", left == grains))
     checks.append(("300 steps", steps == 300))
+checks.append(("the barrier as a rigid body on a spring",
+               re.search(r"^\s*1 rigid bodies with \d+ atoms$", spring, re.M) is not None
+               and re.search(r"^barrier: spring 1000 N/m", spring, re.M) is not None))
 failed = [name for name, ok in checks if not ok]
 for name, ok in checks:
     print(f"{name:30s} {'ok' if ok else 'FAILED'}")
