@@ -222,10 +222,15 @@ void PairSPHGranular::add_wall_force(const Particles &p, int d, bool has_grains)
 {
   double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, fd[3] = {0.0, 0.0, 0.0};
   if (has_grains) GRANSPH::wall_force(p, d, fd, vflag_either ? vir : nullptr);
-  const bool repeat = update->setupflag && integrator->continues_last_step();
-  GRANSPH::keep_or_repeat_wall_force(fd, &integrator->start[d][FixSPHIntegrate::WALL_F], repeat);
+  GRANSPH::keep_or_repeat_wall_force(fd, &integrator->start[d][FixSPHIntegrate::WALL_F],
+                                     repeats_last_wall_forces());
   for (int a = 0; a < 3; ++a) atom->f[d][a] += fd[a] / force->ftm2v;
   if (vflag_either) tally_virial(d, vir);
+}
+
+bool PairSPHGranular::repeats_last_wall_forces() const
+{
+  return update->setupflag && integrator->continues_last_step();
 }
 
 // the grains' forces on the dummy particles (eq. 9), once it is known how the grains

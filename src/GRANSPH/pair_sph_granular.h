@@ -69,6 +69,8 @@ class PairSPHGranular : public Pair {
   void check_wall_normals() const;
   int pack_wall_friction(double *out, const double *unit_normals, int n) const;
   void stop_if_unnormalled(int i);
+  // at the setup of a run that continues the last: the dummies take the last step's force
+  bool repeats_last_wall_forces() const;
   void forward_comm_friction_slide();
 
  private:

@@ -36,21 +36,34 @@ KOKKOS_INLINE_FUNCTION void add_virial(EV_FLOAT &sum, const VirialView &vatom, b
     for (int k = 0; k < 6; ++k) vatom(i, k) += vir[k];
 }
 
-// the force of the grains on dummy particle d (eq. 9; none without granular neighbours),
-// or the last step's (kept in `last`) at the setup of a run that continues it, into f;
-// its virial into the reduction
-template <class Particles, class ForceView, class VirialView>
-KOKKOS_INLINE_FUNCTION void add_dummy_force(const Particles &p, int d, bool has_grains,
-                                            double *last, bool repeat, const ForceView &f,
-                                            double ftm2v, bool want_virial, EV_FLOAT &sum,
-                                            const VirialView &vatom, bool want_vatom)
+// Adds the force of the grains on dummy particle d (eq. 9; none without granular
+// neighbours), or the last step's kept in start (GRANSPH::keep_or_repeat_wall_force), into
+// f, and its virial into the reduction.
+template <class ForceView, class StartView, class VirialView> struct DummyForces {
+  ForceView f;
+  StartView start;
+  VirialView vatom;
+  double ftm2v;
+  bool want_virial, want_vatom, repeat;
+
+  template <class Particles>
+  KOKKOS_INLINE_FUNCTION void add(const Particles &p, int d, bool has_grains, EV_FLOAT &sum) const
+  {
+    double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double fd[3] = {0.0, 0.0, 0.0};
+    if (has_grains) GRANSPH::wall_force(p, d, fd, want_virial ? vir : nullptr);
+    GRANSPH::keep_or_repeat_wall_force(fd, &start(d, FSI::WALL_F), repeat);
+    for (int a = 0; a < 3; ++a) f(d, a) += fd[a] / ftm2v;
+    add_virial(sum, vatom, want_vatom, d, vir);
+  }
+};
+
+template <class ForceView, class StartView, class VirialView>
+DummyForces<ForceView, StartView, VirialView>
+make_dummy_forces(const ForceView &f, const StartView &start, const VirialView &vatom, double ftm2v,
+                  bool want_virial, bool want_vatom, bool repeat)
 {
-  double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  double fd[3] = {0.0, 0.0, 0.0};
-  if (has_grains) GRANSPH::wall_force(p, d, fd, want_virial ? vir : nullptr);
-  GRANSPH::keep_or_repeat_wall_force(fd, last, repeat);
-  for (int a = 0; a < 3; ++a) f(d, a) += fd[a] / ftm2v;
-  add_virial(sum, vatom, want_vatom, d, vir);
+  return {f, start, vatom, ftm2v, want_virial, want_vatom, repeat};
 }
 }    // namespace
 
@@ -297,6 +310,15 @@ void PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int f
       });
 }
 
+// what adds the grains' forces to the dummy particles in this evaluation
+template <class DeviceType> auto PairSPHGranularKokkos<DeviceType>::dummy_forces(SPHStateKokkos &kk)
+{
+  return make_dummy_forces(atomKK->k_f.template view<DeviceType>(),
+                           kk.k_start.template view<DeviceType>(),
+                           k_vatom.template view<DeviceType>(), force->ftm2v, vflag_either != 0,
+                           vflag_atom != 0, repeats_last_wall_forces());
+}
+
 // dummy-particle stresses (eq. 8), with the wall acceleration from the velocity
 // change since the last evaluation, and with_forces the grains' forces on them (eq. 9),
 // which need a wall's own new stress only
@@ -308,10 +330,7 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
   auto particles = d_particles;
   auto state = kk.k_state.template view<DeviceType>();
   auto start = kk.k_start.template view<DeviceType>();
-  auto f = atomKK->k_f.template view<DeviceType>();
-  auto vatom = k_vatom.template view<DeviceType>();
-  const int want_virial = vflag_either, want_vatom = vflag_atom;
-  const double ftm2v = force->ftm2v;
+  const auto dummy = dummy_forces(kk);
   double g[3];
   integrator->gravity_vector(g);
   const double gx = g[0], gy = g[1], gz = g[2];
@@ -319,7 +338,6 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
   const double inv_dt = stepping ? 1.0 / update->dt : 0.0;
   const GRANSPH::WallSums::Mode mode = wall_stress_mode;
   const int forces = with_forces;
-  const int repeat = update->setupflag && integrator->continues_last_step();
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
       ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
@@ -333,9 +351,7 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
         const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
         particles(d).sigma = sums.stress(g_minus_a, mode);
         particles(d).sigma.store(&state(d, FSI::SIGMA));
-        if (forces)
-          add_dummy_force(p, d, sums.has_neighbours(), &start(d, FSI::WALL_F), repeat, f, ftm2v,
-                          want_virial, sum, vatom, want_vatom);
+        if (forces) dummy.add(p, d, sums.has_neighbours(), sum);
       },
       ev);
   if (vflag_global)
@@ -349,20 +365,13 @@ void PairSPHGranularKokkos<DeviceType>::wall_forces(const DeviceParticles<Device
                                                     SPHStateKokkos &kk)
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
-  auto start = kk.k_start.template view<DeviceType>();
-  auto f = atomKK->k_f.template view<DeviceType>();
-  auto vatom = k_vatom.template view<DeviceType>();
-  const int want_virial = vflag_either, want_vatom = vflag_atom;
-  const double ftm2v = force->ftm2v;
-  const int repeat = update->setupflag && integrator->continues_last_step();
+  const auto dummy = dummy_forces(kk);
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
       ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
       LAMMPS_LAMBDA(const int ii, EV_FLOAT &sum) {
         const int d = ilist(ii);
-        if (p.wall(d))
-          add_dummy_force(p, d, true, &start(d, FSI::WALL_F), repeat, f, ftm2v, want_virial, sum,
-                          vatom, want_vatom);
+        if (p.wall(d)) dummy.add(p, d, true, sum);
       },
       ev);
   if (vflag_global)

@@ -58,6 +58,7 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   Kokkos::DualView<double *, DeviceType> k_slide;
 
   int update_wall_normals(int nall, bool limited);
+  auto dummy_forces(SPHStateKokkos &kk);
 };
 
 }    // namespace LAMMPS_NS
