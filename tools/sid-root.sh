@@ -55,7 +55,8 @@ export JOBS=${JOBS:-$(nproc)}
 
 # What the root is made of: sid's current version of each.
 SID_PACKAGES=(libkokkos-dev g++ cmake libopenmpi-dev openmpi-bin libgtest-dev libgmock-dev
-  libyaml-dev libeigen3-dev ninja-build ccache pkgconf python3-numpy python3-matplotlib)
+  libyaml-dev libeigen3-dev ninja-build ccache pkgconf python3-numpy python3-matplotlib
+  python3-gdal python3-stl)
 # shellcheck disable=SC2191 # (name=version words, not array indices)
 # The versions the stack last passed its tests with (2026-12-02). Not a pin: a root
 # with others is used, with a warning that names them. Update after a passing run.

@@ -6,7 +6,7 @@
 
 Every check runs or fails: a missing reader (python3-gdal, python3-stl) or a missing LAMMPS
 is an error here, not a skip. TestLammpsRead needs neither reader (it builds its surface
-from numpy), so the 2026 stack, whose sid root has no GDAL, runs it alone.
+from numpy).
 """
 import importlib.machinery
 import importlib.util
