@@ -46,6 +46,9 @@ mode a strip can hold. Seeded (--seed 1 --widths 4,8,16, 42 checks each):
 - under the phase-change model a monolayer of Chen2019 1.5 degrees above its slide angle
   slides at 0.14-0.15 m/s^2 on strips of 4 to 16 (half of free sliding at mu_s is 0.15;
   mu(I) rises with the shear rate), unseeded 0.55-0.58 m/s^2 on a strip of 16.
+Floors with a friction of their own below the sand's (in.wall_friction, where the grains
+stay below yield) hold seeded as well: delta 15 and 25 degrees, 1 and 4 layers, strips of
+6 to 16, both models, five cases tried by hand.
 Seeded results: default gradient 38 / 40 / 36 / 38 / 38 of 42 checks passed for
 Drucker-Prager, its simple-shear matching, the phase change, Sand25 Drucker-Prager and
 Sand25 phase change; gradient corrected 41 / 40 / 37 / 42 / 39.
