@@ -1,11 +1,11 @@
 #!/usr/bin/python3
-"""The ball's path and the bed at its deepest point (sphere_impact.png):
+"""The ball's path and the bed at the end of a run (sphere_impact.png):
 
   plot_impact.py PATH.txt STATE.dump
 
 PATH.txt is the sphere_impact.txt of a run (time, the ball's bottom, its vertical
 speed), STATE.dump the sphere_impact.dump of a run with -var dump 1 (the README's
-second run: -var stop deepest, the state at the deepest point)."""
+run with -var stop deepest: the state once the ball rests or turns)."""
 
 import sys
 
@@ -26,6 +26,8 @@ def read_dump(path):
 
 
 def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
     path, dump = sys.argv[1:3]
     t, z, vz = np.loadtxt(path, unpack=True)
     atoms = read_dump(dump)
@@ -45,16 +47,19 @@ def main():
     dx = np.min(np.diff(np.unique(np.round(atoms["x"][atoms["type"] == 2], 9))))
     near = (atoms["y"] > 0.0) & (atoms["y"] < dx)
     sand = near & (atoms["type"] == 1)
+    walls = near & (atoms["type"] == 2)
     ball = near & (atoms["type"] == 3)
     speed = np.hypot(atoms["vx"], atoms["vz"])
     points = right.scatter(1e3 * atoms["x"][sand], 1e3 * atoms["z"][sand], c=speed[sand],
                            s=6, cmap="viridis", vmin=0.0)
-    right.scatter(1e3 * atoms["x"][ball], 1e3 * atoms["z"][ball], s=6, color="0.5")
+    right.scatter(1e3 * atoms["x"][walls], 1e3 * atoms["z"][walls], s=6, color="0.8")
+    right.scatter(1e3 * atoms["x"][ball], 1e3 * atoms["z"][ball], s=6, color="0.4")
     right.set_aspect("equal")
     right.set_xlabel("x (mm)")
     right.set_ylabel("z (mm)")
-    right.set_title("the bed at the ball's deepest point (slice y in (0, dx))", fontsize=9)
-    fig.colorbar(points, ax=right, label="grain speed (m/s)")
+    right.set_title("the bed at the end (slice y in (0, dx)): walls light, ball dark",
+                    fontsize=8)
+    fig.colorbar(points, ax=right, label="grain speed in the slice's plane (m/s)")
     fig.tight_layout()
     fig.savefig("sphere_impact.png", dpi=120)
 

@@ -17,7 +17,7 @@ the closer the slope is to the slide angle (0.2 mm/s at 15 degrees, 3.9 mm/s at 
 plane-strain Drucker-Prager at dx = 0.02), where two layers and more stop within 0.5 mm/s.
 
 Every thickness on a strip 6 particles square, and the monolayer, a rough floor's
-hardest case, also on strips of other widths (--widths, default 4,8,16).
+hardest case, also on strips of other widths (--widths, default 4,16).
 The material is Chen2019's sand (phi = 37 deg) or, with --material Sand25, the same sand
 at phi = 25 deg (sand25.gransph; slide angles 22.3 deg plane-strain, 25.0 simple shear,
 25.0 phase change).
@@ -26,8 +26,9 @@ Known limits, which the registered tests leave out (unittest/CMakeLists.txt). Th
 starts on a perfect lattice, so only round-off breaks its symmetry; --seed N displaces the
 grains at random by up to 1e-4 dx along and across the slope first, which seeds every
 mode a strip can hold. Seeded (--seed 1 --widths 4,8,16, 42 checks each):
-- a monolayer held 1.5 degrees below its slide angle slips on strips of 8 and 16 columns,
-  for both materials, both models and both spacings (up to 4 cm/s and 0.23 m/s^2 by 0.3 s;
+- a monolayer held 1.5 degrees below its slide angle slips on strips of 8 and 16 columns
+  (15 of the 16 such checks of the four configurations with the plane-strain matching or
+  the phase change, both materials and spacings: up to 4 cm/s and 0.23 m/s^2 by 0.3 s;
   strips of 4 and 6 hold), through a stress wave 8 columns long that travels along the
   slope, in which the stretched grains' sigma_xx falls to zero (the cone's apex) and with
   it their shear strength. Without the seed the same run holds or slips by the last digit
@@ -35,10 +36,11 @@ mode a strip can hold. Seeded (--seed 1 --widths 4,8,16, 42 checks each):
   28.11724501573419, the registered case). The mode needs the grains at yield (a layer of
   phi = 60 degrees holds), grows under a slow, damped tilt too, and is absent on a
   wall/stress paper floor (whose monolayer slides at 18 degrees) and in layers of 2 (32
-  columns hold); consistent with the loss of well-posedness of non-associated perfectly
-  plastic Drucker-Prager at yield, its wavelength set by the kernel: with a dilatancy
-  angle of 5 degrees (Chen2019 otherwise, a material file made by hand) the seeded
-  monolayer holds on 8 and 16 columns at both spacings (rising by 0.02 dx).
+  columns hold); consistent with, but not shown to be, a loss of well-posedness of
+  perfectly plastic Drucker-Prager at yield with psi = 0, its wavelength set by the
+  kernel: with a dilatancy angle of 5 degrees (Chen2019 otherwise; a material file made by
+  hand for the trial, not kept) the seeded monolayer holds on 8 and 16 columns at both
+  spacings (rising by 0.02 dx).
   With --pair "gradient corrected" 38 of the 40 monolayer hold checks of the five
   configurations below pass (25 with the default gradient); the other two creep at 2-3
   mm/s, accelerating at 0.02-0.03 m/s^2;
@@ -46,11 +48,12 @@ mode a strip can hold. Seeded (--seed 1 --widths 4,8,16, 42 checks each):
   1.5 degrees below its slide angle slips (0.13 / 0.08 m/s under simple shear, 0.04 /
   0.02 m/s under the phase change, dx 0.02 / 0.01), with either gradient;
 - under the phase-change model a monolayer of Chen2019 1.5 degrees above its slide angle
-  slides at 0.14-0.15 m/s^2 on strips of 4 to 16 (half of free sliding at mu_s is 0.15;
-  mu(I) rises with the shear rate), unseeded 0.55-0.58 m/s^2 on a strip of 16.
+  slides at about the check's threshold, half of free sliding at mu_s (0.153 m/s^2; mu(I)
+  rises with the shear rate): 0.141 on a strip of 4 (dx 0.02, failed), 0.14-0.15 on strips
+  of 6 and 16 with the corrected gradient (failed); unseeded 0.55-0.58 on a strip of 16.
 Floors with a friction of their own below the sand's (in.wall_friction, where the grains
 stay below yield) hold seeded as well: delta 15 and 25 degrees, 1 and 4 layers, strips of
-6 to 16, both models, five cases tried by hand.
+6 to 16, both models, five cases tried by hand (in.wall_friction has no seed option).
 Seeded results: default gradient 38 / 40 / 36 / 38 / 38 of 42 checks passed for
 Drucker-Prager, its simple-shear matching, the phase change, Sand25 Drucker-Prager and
 Sand25 phase change; gradient corrected 41 / 40 / 37 / 42 / 39.
