@@ -35,7 +35,7 @@ with tempfile.TemporaryDirectory() as tmp:
                                                f"include {EXAMPLE}\n", args=ARGS)
 
 words = results["1 rank"]
-d, steps, end = (float(words[words.index(key) + 1]) for key in ("d", "steps", "time"))
+d, steps, t_end = (float(words[words.index(key) + 1]) for key in ("d", "steps", "time"))
 # before it comes within the kernel's reach of the sand (0.6 dx of fall) only its weight
 # acts: vz falls by g t, from the first step on (the first step itself changes vz by about
 # 0.65 g dt more than g dt: 5.5e-5 m/s of 1.34 at D/6, not traced)
@@ -46,8 +46,8 @@ check("the ball falls under its own weight", falling.sum() > 5 and fall_error < 
       f"{falling.sum()} samples, largest difference {fall_error:.1e} m/s")
 check("the ball entered the bed and stopped above its floor (2 D deep)",
       0.1 * DX < d < 2 * D - DX, f"deepest {1e3 * d:.2f} mm, dx {1e3 * DX:.2f} mm")
-check("the grains stopped it before tmax (at rest or turning)", end < 0.1,
-      f"ended at {end} s, vz {vz[-1]:.2e} m/s")
+check("the grains stopped it before tmax (at rest or turning)", t_end < 0.1,
+      f"ended at {t_end} s, vz {vz[-1]:.2e} m/s")
 diffs = gransph_run.dump_differences(states["1 rank"], states["2 ranks"])
 check("2 ranks = 1 rank (the dump's 10 digits)", max(diffs.values()) < 1e-8,
       f"largest relative difference {max(diffs.values()):.1e}")
