@@ -6,11 +6,16 @@
 #         tools/sid-root.sh, build-2026/; its lock (package versions, LAMMPS version
 #         and tarball sha256) is printed first
 # GRANSPH_STACKS selects them (default "2021 2026"; e.g. GRANSPH_STACKS=2021).
-# Arguments go to ctest on each stack (e.g. -R Physics -j2).
+# Arguments go to ctest on each stack (e.g. -R Physics -j1).
+# ctest runs as many tests at once as there are cores (CTEST_PARALLEL_LEVEL, or -j):
+# most tests are one LAMMPS process at a time and Python between runs, so on two cores
+# the suite takes about half the time (a test's 2-rank runs then share the cores with
+# another test: slower, not different).
 # Each stack's time is printed per step: dependencies, plugin, tests.
 set -uo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export CTEST_PARALLEL_LEVEL=${CTEST_PARALLEL_LEVEL:-$(nproc)}
 
 times=()
 step() { # step NAME CMD...: run CMD, note its wall time
@@ -31,7 +36,8 @@ stack_2026() {
     echo "=== the 2026 stack is made of (its lock, from tools/sid-root.sh lock):" &&
     bash "$top/tools/sid-root.sh" lock &&
     step plugin env GRANSPH_STACK=2026 bash "$top/tools/build.sh" &&
-    step tests bash "$top/tools/sid-root.sh" run bash -c 'cd /gransph/build-2026 && ctest --output-on-failure "$@"' _ "$@"
+    step tests bash "$top/tools/sid-root.sh" run bash -c 'cd /gransph/build-2026 &&
+      CTEST_PARALLEL_LEVEL=$1 ctest --output-on-failure "${@:2}"' _ "$CTEST_PARALLEL_LEVEL" "$@"
 }
 
 failed=()
