@@ -1,8 +1,8 @@
 """examples/sphere_impact runs: a steel ball of fix rigid dropped into the sand bed at a
-coarse resolution (D / 5, a bed 3 D wide and 1.5 D deep) falls under its own weight until it meets the sand, enters the
-bed and is stopped by the grains before tmax (the run ends once it rests or turns
-upwards, -var stop deepest) and prints its result line; the same run on 2 MPI ranks
-gives the same state. A bad `stop` is refused with a message.
+coarse resolution (D / 5, a bed 3 D wide and 1.5 D deep) falls under its own weight
+until it meets the sand, enters the bed and is stopped by the grains before tmax (the
+run ends once it rests or turns upwards, -var stop deepest) and prints its result line;
+the same run on 2 MPI ranks gives the same state. A bad `stop` is refused with a message.
 
 Arguments are passed to LAMMPS (e.g. -k on t 1 -sf kk): every run then takes them, and
 the state of the first also equals the plain styles'."""
