@@ -33,14 +33,15 @@ mode a strip can hold. Seeded (--seed 1 --widths 4,8,16, 42 checks each):
   slope, in which the stretched grains' sigma_xx falls to zero (the cone's apex) and with
   it their shear strength. Without the seed the same run holds or slips by the last digit
   of theta (Chen2019, Drucker-Prager, 16 columns: slips at 28.1172 degrees, holds at
-  28.11724501573419, the registered case). The mode needs the grains at yield (a layer of
-  phi = 60 degrees holds), grows under a slow, damped tilt too, and is absent on a
-  wall/stress paper floor (whose monolayer slides at 18 degrees) and in layers of 2 (32
-  columns hold); consistent with, but not shown to be, a loss of well-posedness of
-  perfectly plastic Drucker-Prager at yield with psi = 0, its wavelength set by the
-  kernel: with a dilatancy angle of 5 degrees (Chen2019 otherwise; a material file made by
-  hand for the trial, not kept) the seeded monolayer holds on 8 and 16 columns at both
-  spacings (rising by 0.02 dx).
+  28.11724501573419, the registered case). The cause is the floor, not the material: the
+  default wall/stress ratio makes a layer at rest on a dummy floor linearly unstable, level
+  or tilted, below yield too (a layer of phi = 60 degrees breaks up the same way, and
+  holds only because it stays below yield), while wall/stress paper (whose monolayer
+  slides at 18 degrees) is neutral: validation/README.md, "The rough floor's thinnest
+  layer", and tools/wall-stability, which finds the growth from the equations alone and a
+  design stable at rest (not yet sliding where the material does). Layers of 2 grow the same pattern but hold (32 columns); with
+  a dilatancy angle of 5 degrees (a trial material, not kept) the seeded monolayer holds
+  on 8 and 16 columns at both spacings (rising by 0.02 dx).
   With --pair "gradient corrected" 38 of the 40 monolayer hold checks of the five
   configurations below pass (25 with the default gradient); the other two creep at 2-3
   mm/s, accelerating at 0.02-0.03 m/s^2;
