@@ -39,9 +39,10 @@ mode a strip can hold. Seeded (--seed 1 --widths 4,8,16, 42 checks each):
   holds only because it stays below yield), while wall/stress paper (whose monolayer
   slides at 18 degrees) is neutral: validation/README.md, "The rough floor's thinnest
   layer", and tools/wall-stability, which finds the growth from the equations alone and a
-  design stable at rest (not yet sliding where the material does). Layers of 2 grow the same pattern but hold (32 columns); with
-  a dilatancy angle of 5 degrees (a trial material, not kept) the seeded monolayer holds
-  on 8 and 16 columns at both spacings (rising by 0.02 dx).
+  design stable at rest (not yet sliding where the material does). Layers of 2 grow the
+  same pattern but hold (32 columns); with a dilatancy angle of 5 degrees (a trial
+  material, not kept) the seeded monolayer holds on 8 and 16 columns at both spacings
+  (rising by 0.02 dx).
   With --pair "gradient corrected" 38 of the 40 monolayer hold checks of the five
   configurations below pass (25 with the default gradient); the other two creep at 2-3
   mm/s, accelerating at 0.02-0.03 m/s^2;
