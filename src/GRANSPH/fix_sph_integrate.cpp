@@ -45,7 +45,8 @@ std::vector<double> pair_settings(const Force *force)
 
 FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), state(nullptr), rates(nullptr), start(nullptr), wallbit(0),
-    rho_init(0.0), cfl(0.2), cfl_sound_reference(1), geostatic_flag(0), surface_height(0.0),
+    rho_init(0.0), cfl(0.2), cfl_sound_reference(1), predictor_extrapolated(0),
+    geostatic_flag(0), surface_height(0.0),
     restored(0), last_dt(0.0), fresh_start(nullptr)
 {
   const std::string style_name = std::string("fix ") + style;
@@ -79,6 +80,12 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
       if (value != "local" && value != "reference")
         error->all(FLERR, "{}: cfl/sound must be local or reference, not {}", style_name, value);
       cfl_sound_reference = value == "reference";
+    } else if (key == "predictor") {
+      const std::string value = arg[iarg + 1];
+      if (value != "midpoint" && value != "extrapolated")
+        error->all(FLERR, "{}: predictor must be midpoint or extrapolated, not {}", style_name,
+                   value);
+      predictor_extrapolated = value == "extrapolated";
     } else if (key == "matching" || key == "plastic") {
       if (!utils::strmatch(style, "^sph/elastoplastic"))
         error->all(FLERR, "{}: keyword {} is for fix sph/elastoplastic only", style_name, key);

@@ -12,6 +12,8 @@
 #include "gransph_integrator.h"
 #include "update.h"
 
+#include <cstring>
+
 namespace LAMMPS_NS {
 
 template <class Model> class FixSPHModel : public FixSPHIntegrate {
@@ -55,13 +57,17 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
       // the predictor takes the acceleration of the last step's mid-point, which the
       // corrector kept; without a step, that of the setup evaluation
       const bool stored = stage == PREDICT && start[i][STEPPED] != 0.0;
-      const GRANSPH::StepRates r{{stored ? rates[i][ACC] : ftm * f[i][0],
-                                  stored ? rates[i][ACC + 1] : ftm * f[i][1],
-                                  stored ? rates[i][ACC + 2] : ftm * f[i][2]},
-                                 rates[i][DRHO], GRANSPH::Sym3::load(&rates[i][STRAIN]),
-                                 GRANSPH::Spin3::load(&rates[i][SPIN])};
+      GRANSPH::StepRates r = rates_at(i, 0);
+      if (!stored)
+        for (int a = 0; a < 3; ++a) r.acc[a] = ftm * f[i][a];
       GRANSPH::Regime regime;
       if (stage == PREDICT) {
+        if (predictor_extrapolated) {    // from the last two mid-points, which PREV then holds
+          if (start[i][STEPPED] >= 2.0)
+            r = GRANSPH::extrapolated(r, rates_at(i, PREV), rates[i][RATES_DT],
+                                      rates[i][PREV + RATES_DT]);
+          memcpy(&rates[i][PREV], rates[i], PREV * sizeof(double));
+        }
         GRANSPH::predict(model, p, s, r, dt, regime);
         for (int a = 0; a < 3; ++a) start[i][V_START + a] = s.v[a];
         start[i][RHO_START] = s.rho;
@@ -69,7 +75,8 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
       } else {
         GRANSPH::correct(model, p, s, r, dt, regime);
         for (int a = 0; a < 3; ++a) rates[i][ACC + a] = r.acc[a];
-        start[i][STEPPED] = 1.0;
+        rates[i][RATES_DT] = dt;
+        start[i][STEPPED] = fmin(start[i][STEPPED] + 1.0, 2.0);
       }
       for (int a = 0; a < 3; ++a) {
         x[i][a] = p.x[a];
@@ -79,6 +86,14 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
       p.sigma.store(&state[i][SIGMA]);
       state[i][REGIME] = regime;
     }
+  }
+
+  // the rates in the columns from `at` of atom i's row (0: the last evaluation's)
+  GRANSPH::StepRates rates_at(int i, int at) const
+  {
+    const double *r = &rates[i][at];
+    return {{r[ACC], r[ACC + 1], r[ACC + 2]}, r[DRHO], GRANSPH::Sym3::load(&r[STRAIN]),
+            GRANSPH::Spin3::load(&r[SPIN])};
   }
 };
 

@@ -31,14 +31,25 @@ template <class DeviceType, class Model, bool PREDICT> struct StepFunctor {
   typename KT::t_int_const mask, type;
   typename KT::t_mass_const rmass, mass;
   typename KT::t_state state, rates, start;
-  int groupbit, use_rmass;
+  int groupbit, use_rmass, extrapolate;
   double dt, ftm2v;
+
+  // the rates in the columns from `at` of atom i's row (as FixSPHModel::rates_at)
+  KOKKOS_INLINE_FUNCTION GRANSPH::StepRates rates_at(int i, int at) const
+  {
+    constexpr int D = FSI::STRAIN, W = FSI::SPIN, A = FSI::ACC;
+    return {{rates(i, at + A), rates(i, at + A + 1), rates(i, at + A + 2)},
+            rates(i, at + FSI::DRHO),
+            {rates(i, at + D), rates(i, at + D + 1), rates(i, at + D + 2), rates(i, at + D + 3),
+             rates(i, at + D + 4), rates(i, at + D + 5)},
+            {rates(i, at + W), rates(i, at + W + 1), rates(i, at + W + 2)}};
+  }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
     using namespace GRANSPH;
     if (!(mask(i) & groupbit)) return;
-    constexpr int S = FSI::SIGMA, SS = FSI::SIGMA_START, D = FSI::STRAIN, W = FSI::SPIN;
+    constexpr int S = FSI::SIGMA, SS = FSI::SIGMA_START;
     const double ftm = ftm2v / (use_rmass ? rmass(i) : mass(type(i)));
     ParticleState p{{x(i, 0), x(i, 1), x(i, 2)}, {v(i, 0), v(i, 1), v(i, 2)}, state(i, FSI::RHO),
                     {state(i, S), state(i, S + 1), state(i, S + 2), state(i, S + 3),
@@ -48,15 +59,17 @@ template <class DeviceType, class Model, bool PREDICT> struct StepFunctor {
                 {start(i, SS), start(i, SS + 1), start(i, SS + 2), start(i, SS + 3),
                  start(i, SS + 4), start(i, SS + 5)}};
     const bool stored = PREDICT && start(i, FSI::STEPPED) != 0.0;    // as FixSPHModel
-    const StepRates r{{stored ? rates(i, FSI::ACC) : ftm * f(i, 0),
-                       stored ? rates(i, FSI::ACC + 1) : ftm * f(i, 1),
-                       stored ? rates(i, FSI::ACC + 2) : ftm * f(i, 2)},
-                      rates(i, FSI::DRHO),
-                      {rates(i, D), rates(i, D + 1), rates(i, D + 2), rates(i, D + 3),
-                       rates(i, D + 4), rates(i, D + 5)},
-                      {rates(i, W), rates(i, W + 1), rates(i, W + 2)}};
+    StepRates r = rates_at(i, 0);
+    if (!stored)
+      for (int a = 0; a < 3; ++a) r.acc[a] = ftm * f(i, a);
     Regime regime;
     if (PREDICT) {
+      if (extrapolate) {
+        if (start(i, FSI::STEPPED) >= 2.0)
+          r = extrapolated(r, rates_at(i, FSI::PREV), rates(i, FSI::RATES_DT),
+                           rates(i, FSI::PREV + FSI::RATES_DT));
+        for (int k = 0; k < FSI::PREV; ++k) rates(i, FSI::PREV + k) = rates(i, k);
+      }
       predict(model, p, s, r, dt, regime);
       for (int a = 0; a < 3; ++a) start(i, FSI::V_START + a) = s.v[a];
       start(i, FSI::RHO_START) = s.rho;
@@ -64,7 +77,8 @@ template <class DeviceType, class Model, bool PREDICT> struct StepFunctor {
     } else {
       correct(model, p, s, r, dt, regime);
       for (int a = 0; a < 3; ++a) rates(i, FSI::ACC + a) = r.acc[a];
-      start(i, FSI::STEPPED) = 1.0;
+      rates(i, FSI::RATES_DT) = dt;
+      start(i, FSI::STEPPED) = fmin(start(i, FSI::STEPPED) + 1.0, 2.0);
     }
     for (int a = 0; a < 3; ++a) {
       x(i, a) = p.x[a];
@@ -182,6 +196,7 @@ template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Mode
     functor.start = k_start.template view<DeviceType>();
     functor.groupbit = this->groupbit;
     functor.use_rmass = this->atom->rmass != nullptr;
+    functor.extrapolate = this->predictor_extrapolated;
     functor.dt = this->update->dt;
     functor.ftm2v = this->force->ftm2v;
     Kokkos::parallel_for(
@@ -195,7 +210,7 @@ template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Mode
   atomKK->modified(this->execution_space, this->datamask_modify);
   k_state.template modify<DeviceType>();
   k_start.template modify<DeviceType>();
-  if (!predict) k_rates.template modify<DeviceType>();
+  if (!predict || this->predictor_extrapolated) k_rates.template modify<DeviceType>();
 }
 
 // non-finite states or non-positive densities among this rank's granular particles

@@ -1,7 +1,8 @@
 """A run continues exactly across run commands and restarts: in.continuation run
 in one piece, in two runs, and in two processes through a restart file gives the
 same positions, velocities, density and stress to round-off (1e-12 of the largest
-value of each), for both integrator fixes, on 1 and 2 MPI ranks, with the CFL
+value of each), for both integrator fixes (and with the extrapolated predictor, which
+keeps the rates of the last two steps), on 1 and 2 MPI ranks, with the CFL
 timestep and a wall whose velocity changes every step. What invalidates the rates
 of the last step is recomputed and said in the log. Arguments are passed to LAMMPS
 (e.g. -k on t 1 -sf kk)."""
@@ -39,22 +40,31 @@ def difference(a, b):
     return result
 
 
+# the integrator fixes, and one with the predictor that keeps the rates of two steps
+SETTINGS = [("elastoplastic", ""), ("phasechange", ""),
+            ("elastoplastic", "predictor extrapolated")]
+
 with tempfile.TemporaryDirectory() as tmp:
-    for model in ("elastoplastic", "phasechange"):
+    for model, options in SETTINGS:
         for ranks in (1, 2):
-            name = f"{model}, {ranks} rank{'s' if ranks > 1 else ''}"
-            out, straight = run(tmp, ranks, model=model, mode=0)
+            name = ", ".join([model] + ([options] if options else [])
+                             + [f"{ranks} rank{'s' if ranks > 1 else ''}"])
+
+            def run_case(mode):
+                return run(tmp, ranks, model=model, fix_options=options, mode=mode)
+
+            out, straight = run_case(mode=0)
             check(f"{name}: something happens",
                   np.max(np.abs(straight["vx"])) > 1e-2 and np.max(np.abs(straight["f_sph[4]"])) > 100,
                   f"max |vx| {np.max(np.abs(straight['vx'])):.3g} m/s, "
                   f"max |sigma_zz| {np.max(np.abs(straight['f_sph[4]'])):.3g} Pa")
-            out, split = run(tmp, ranks, model=model, mode=1)
+            out, split = run_case(mode=1)
             diff = difference(straight, split)
             check(f"{name}: two runs = one", max(diff.values()) < 1e-12 and out.count(FRESH) == 1,
                   ", ".join(f"{g} {d:.1e}" for g, d in diff.items())
                   + f"; rates recomputed {out.count(FRESH)} time(s)")
-            run(tmp, ranks, model=model, mode=2)
-            out, restarted = run(tmp, ranks, model=model, mode=3)
+            run_case(mode=2)
+            out, restarted = run_case(mode=3)
             diff = difference(straight, restarted)
             check(f"{name}: restarted = one run", max(diff.values()) < 1e-12 and FRESH not in out,
                   ", ".join(f"{g} {d:.1e}" for g, d in diff.items()))

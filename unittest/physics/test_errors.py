@@ -72,6 +72,8 @@ CASES = [
     ("bad cfl", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 cfl 2"), "cfl must be in"),
     ("bad cfl sound speed", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 cfl/sound bulk"),
      "cfl/sound must be local or reference, not bulk"),
+    ("bad predictor", dict(fix="fix sph sand sph/phasechange sand.gransph Chen2019 predictor ab2"),
+     "predictor must be midpoint or extrapolated, not ab2"),
     ("bad plastic step", dict(fix="fix sph sand sph/elastoplastic sand.gransph Chen2019 plastic foo"),
      "plastic must be return or paper"),
     ("plastic for the phase-change model",

@@ -1,9 +1,9 @@
 """The /kk styles on 2 OpenMP threads reproduce the plain styles to round-off:
 positions, velocities, density and stress after a few hundred steps of the
 column collapse (elastoplastic, dummy walls; also with the walls' velocity along
-their normal only, from the dummies' centre or their own normals, and with a floor of
-a friction of its own), the jet collision (phase change), and what compute
-sph/stress/atom makes of the column's stress."""
+their normal only, from the dummies' centre or their own normals, with a floor of
+a friction of its own, and with the predictor extrapolated), the jet collision
+(phase change), and what compute sph/stress/atom makes of the column's stress."""
 
 import os
 import tempfile
@@ -18,6 +18,7 @@ CASES = [
     ("column_collapse", {"steps": 300, "pair_options": "wall/gradient normal"}),
     ("column_collapse", {"steps": 300, "pair_options": "wall/gradient normal", "normals": 1}),
     ("column_collapse", {"steps": 300, "pair_options": "wall/friction floor 20", "normals": 1}),
+    ("column_collapse", {"steps": 300, "fix_options": "predictor extrapolated"}),
     ("jet_collision", {"steps": 300, "dx": 0.016}),
 ]
 KOKKOS = ["-k", "on", "t", "2", "-sf", "kk"]
@@ -33,7 +34,8 @@ with tempfile.TemporaryDirectory() as tmp:
             states.append(gransph_run.read_dump(os.path.join(tmp, f"{case}.dump")))
         plain, kk = states
         assert np.max(np.abs(plain["vx"])) > 1e-3, "nothing moved: nothing was compared"
-        label = case + (f" ({variables['pair_options']})" if "pair_options" in variables else "") + \
+        options = " ".join(variables.get(k, "") for k in ("pair_options", "fix_options")).strip()
+        label = case + (f" ({options})" if options else "") + \
             (" own normals" if variables.get("normals") else "") + " plain - kk"
         gransph_run.check_same_state(check, label, plain, kk, 1e-10)
 check.finish()
