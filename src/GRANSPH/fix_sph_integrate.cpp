@@ -29,10 +29,6 @@ using namespace FixConst;
 using GRANSPH::Sym3;
 
 namespace {
-// the enums are distinct types: their sum as ints (C++20 deprecates enum arithmetic)
-constexpr int ROW = int(FixSPHIntegrate::NSTATE) + int(FixSPHIntegrate::NRATES) +
-    int(FixSPHIntegrate::NSTART);
-
 // the settings of the pair style the rates depend on (none for another style)
 std::vector<double> pair_settings(const Force *force)
 {
@@ -45,7 +41,7 @@ std::vector<double> pair_settings(const Force *force)
 
 FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), state(nullptr), rates(nullptr), start(nullptr), wallbit(0),
-    rho_init(0.0), cfl(0.2), cfl_sound_reference(1), predictor_extrapolated(0),
+    rho_init(0.0), cfl(0.2), cfl_sound_reference(1), predictor_extrapolated(0), nrates(PREV),
     geostatic_flag(0), surface_height(0.0),
     restored(0), last_dt(0.0), fresh_start(nullptr)
 {
@@ -86,6 +82,7 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "{}: predictor must be midpoint or extrapolated, not {}", style_name,
                    value);
       predictor_extrapolated = value == "extrapolated";
+      nrates = predictor_extrapolated ? NRATES : PREV;
     } else if (key == "matching" || key == "plastic") {
       if (!utils::strmatch(style, "^sph/elastoplastic"))
         error->all(FLERR, "{}: keyword {} is for fix sph/elastoplastic only", style_name, key);
@@ -223,31 +220,33 @@ void FixSPHIntegrate::forget_steps()
 void FixSPHIntegrate::save_step()
 {
   const int nlocal = atom->nlocal;
-  saved.resize((size_t) nlocal * ROW);
+  const int size = row_size();
+  saved.resize((size_t) nlocal * size);
   for (int i = 0; i < nlocal; ++i) {
-    double *row = &saved[(size_t) i * ROW];
+    double *row = &saved[(size_t) i * size];
     memcpy(row, state[i], NSTATE * sizeof(double));
-    memcpy(row + NSTATE, rates[i], NRATES * sizeof(double));
-    memcpy(row + NSTATE + NRATES, start[i], NSTART * sizeof(double));
+    memcpy(row + NSTATE, rates[i], nrates * sizeof(double));
+    memcpy(row + NSTATE + nrates, start[i], NSTART * sizeof(double));
   }
 }
 
 // atoms without a step (created since) keep the rates of the setup evaluation
 void FixSPHIntegrate::restore_step()
 {
-  const int nrows = MIN(atom->nlocal, (int) (saved.size() / ROW));
+  const int size = row_size();
+  const int nrows = MIN(atom->nlocal, (int) (saved.size() / size));
   bigint fresh[2] = {0, 0};    // grains without a step, all grains
   for (int i = 0; i < nrows; ++i) {
-    const double *row = &saved[(size_t) i * ROW];
+    const double *row = &saved[(size_t) i * size];
     const bool grain = atom->mask[i] & groupbit;
     fresh[1] += grain;
-    if (row[int(NSTATE) + int(NRATES) + int(STEPPED)] == 0.0) {
+    if (row[NSTATE + nrates + STEPPED] == 0.0) {
       fresh[0] += grain;
       continue;
     }
     memcpy(state[i], row, NSTATE * sizeof(double));
-    memcpy(rates[i], row + NSTATE, NRATES * sizeof(double));
-    memcpy(start[i], row + NSTATE + NRATES, NSTART * sizeof(double));
+    memcpy(rates[i], row + NSTATE, nrates * sizeof(double));
+    memcpy(start[i], row + NSTATE + nrates, NSTART * sizeof(double));
   }
   std::vector<double>().swap(saved);
   bigint total[2];
@@ -421,7 +420,7 @@ void FixSPHIntegrate::check_plane() const
 void FixSPHIntegrate::grow_arrays(int nmax)
 {
   memory->grow(state, nmax, NSTATE, "sph:state");
-  memory->grow(rates, nmax, NRATES, "sph:rates");
+  memory->grow(rates, nmax, nrates, "sph:rates");
   memory->grow(start, nmax, NSTART, "sph:start");
   array_atom = state;
 }
@@ -430,7 +429,7 @@ void FixSPHIntegrate::copy_arrays(int i, int j, int /*delflag*/)
 {
   if (i == j) return;    // LAMMPS copies the last atom onto itself when deleting it
   memcpy(state[j], state[i], NSTATE * sizeof(double));
-  memcpy(rates[j], rates[i], NRATES * sizeof(double));
+  memcpy(rates[j], rates[i], nrates * sizeof(double));
   memcpy(start[j], start[i], NSTART * sizeof(double));
 }
 
@@ -439,7 +438,7 @@ void FixSPHIntegrate::set_arrays(int i)
 {
   state[i][RHO] = rho_init;
   for (int k = 1; k < NSTATE; ++k) state[i][k] = 0.0;    // stress-free, ELASTIC
-  for (int k = 0; k < NRATES; ++k) rates[i][k] = 0.0;
+  for (int k = 0; k < nrates; ++k) rates[i][k] = 0.0;
   for (int k = 0; k < NSTART; ++k) start[i][k] = 0.0;
 }
 
@@ -447,7 +446,7 @@ int FixSPHIntegrate::pack_exchange(int i, double *buf)
 {
   int m = 0;
   for (int k = 0; k < NSTATE; ++k) buf[m++] = state[i][k];
-  for (int k = 0; k < NRATES; ++k) buf[m++] = rates[i][k];
+  for (int k = 0; k < nrates; ++k) buf[m++] = rates[i][k];
   for (int k = 0; k < NSTART; ++k) buf[m++] = start[i][k];
   return m;
 }
@@ -456,7 +455,7 @@ int FixSPHIntegrate::unpack_exchange(int nlocal, double *buf)
 {
   int m = 0;
   for (int k = 0; k < NSTATE; ++k) state[nlocal][k] = buf[m++];
-  for (int k = 0; k < NRATES; ++k) rates[nlocal][k] = buf[m++];
+  for (int k = 0; k < nrates; ++k) rates[nlocal][k] = buf[m++];
   for (int k = 0; k < NSTART; ++k) start[nlocal][k] = buf[m++];
   return m;
 }
@@ -465,7 +464,7 @@ int FixSPHIntegrate::unpack_exchange(int nlocal, double *buf)
 // start of the step
 int FixSPHIntegrate::pack_restart(int i, double *buf)
 {
-  buf[0] = ROW + 1;
+  buf[0] = row_size() + 1;
   return 1 + pack_exchange(i, buf + 1);
 }
 
@@ -476,7 +475,7 @@ void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   const int size = static_cast<int>(extra[nlocal][m++]);
-  if (size == ROW + 1)
+  if (size == row_size() + 1)
     unpack_exchange(nlocal, &extra[nlocal][m]);
   else
     for (int k = 0; k < NSTATE; ++k) state[nlocal][k] = extra[nlocal][m++];
@@ -485,12 +484,12 @@ void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
 
 int FixSPHIntegrate::size_restart(int /*nlocal*/)
 {
-  return ROW + 1;
+  return row_size() + 1;
 }
 
 int FixSPHIntegrate::maxsize_restart()
 {
-  return ROW + 1;
+  return row_size() + 1;
 }
 
 int FixSPHIntegrate::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
@@ -511,5 +510,5 @@ void FixSPHIntegrate::unpack_forward_comm(int n, int first, double *buf)
 
 double FixSPHIntegrate::memory_usage()
 {
-  return (double) atom->nmax * ROW * sizeof(double);
+  return (double) atom->nmax * row_size() * sizeof(double);
 }

@@ -33,12 +33,13 @@ class FixSPHIntegrate : public Fix {
   enum { RHO = 0, SIGMA = 1, REGIME = 7, VISC_PRESSURE = 8, NSTATE = 9, NCOMM = 7 };
   // RATES: what the pair style writes, and the acceleration of the same evaluation
   // that the next predictor uses, with the step (RATES_DT) whose mid-point they are;
-  // from PREV on the same for the step before (predictor extrapolated). START: the
-  // start of the step for the corrector, the wall velocity of the last evaluation, and
-  // STEPPED: the number of steps, up to 2, whose evaluation the atom's rates (grains) or
-  // wall velocity (dummy particles) come from; WALL_F: the grains' force on a dummy
-  // particle in the last evaluation (the pair style's part of its f), which the setup of
-  // a run that continues the last repeats.
+  // from PREV on the same for the step before (only with predictor extrapolated, which
+  // alone allocates those columns: see nrates). START: the start of the step for the
+  // corrector, the wall velocity of the last evaluation, and STEPPED: the number of
+  // steps, up to 2, whose evaluation the atom's rates (grains) or wall velocity (dummy
+  // particles) come from; WALL_F: the grains' force on a dummy particle in the last
+  // evaluation (the pair style's part of its f), which the setup of a run that
+  // continues the last repeats.
   enum { DRHO = 0, STRAIN = 1, SPIN = 7, ACC = 10, RATES_DT = 13, PREV = 14, NRATES = 28 };
   enum {
     V_START = 0,
@@ -97,6 +98,8 @@ class FixSPHIntegrate : public Fix {
   double cfl;           // CFL factor of eq. 19; 0 keeps the LAMMPS timestep
   int cfl_sound_reference;    // eq. 19's sound speed at rho_init, not at each grain's density
   int predictor_extrapolated;    // the predictor's rates extrapolated to the step's start
+  int nrates;           // columns of `rates`: PREV, or NRATES with the step before's
+  int row_size() const { return NSTATE + nrates + NSTART; }    // all per-atom values
   int geostatic_flag;   // initialise a geostatic stress below surface_height
   double surface_height;
   int restored;         // state came from a restart file

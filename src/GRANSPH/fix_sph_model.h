@@ -75,7 +75,7 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
       } else {
         GRANSPH::correct(model, p, s, r, dt, regime);
         for (int a = 0; a < 3; ++a) rates[i][ACC + a] = r.acc[a];
-        rates[i][RATES_DT] = dt;
+        if (predictor_extrapolated) rates[i][RATES_DT] = dt;
         start[i][STEPPED] = fmin(start[i][STEPPED] + 1.0, 2.0);
       }
       for (int a = 0; a < 3; ++a) {

@@ -77,7 +77,7 @@ template <class DeviceType, class Model, bool PREDICT> struct StepFunctor {
     } else {
       correct(model, p, s, r, dt, regime);
       for (int a = 0; a < 3; ++a) rates(i, FSI::ACC + a) = r.acc[a];
-      rates(i, FSI::RATES_DT) = dt;
+      if (extrapolate) rates(i, FSI::RATES_DT) = dt;
       start(i, FSI::STEPPED) = fmin(start(i, FSI::STEPPED) + 1.0, 2.0);
     }
     for (int a = 0; a < 3; ++a) {
@@ -100,7 +100,7 @@ FixSPHModelKokkos<DeviceType, Model>::FixSPHModelKokkos(LAMMPS *lmp, int narg, c
 {
   this->kokkosable = 1;
   this->forward_comm_device = 1;
-  GRANSPHCompat::enable_device_exchange(this, int(FSI::NSTATE) + int(FSI::NRATES) + int(FSI::NSTART));
+  GRANSPHCompat::enable_device_exchange(this, this->row_size());
   this->atomKK = (AtomKokkos *) this->atom;
   this->execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
   this->datamask_read = X_MASK | V_MASK | F_MASK | MASK_MASK | RMASS_MASK | TYPE_MASK;
@@ -376,7 +376,7 @@ void FixSPHModelKokkos<DeviceType, Model>::grow_arrays(int nmax)
 {
   sync_host();    // grow_kokkos reallocates and copies on the host
   this->memoryKK->grow_kokkos(k_state, this->state, nmax, FSI::NSTATE, "sph:state");
-  this->memoryKK->grow_kokkos(k_rates, this->rates, nmax, FSI::NRATES, "sph:rates");
+  this->memoryKK->grow_kokkos(k_rates, this->rates, nmax, this->nrates, "sph:rates");
   this->memoryKK->grow_kokkos(k_start, this->start, nmax, FSI::NSTART, "sph:start");
   this->array_atom = this->state;
 }
