@@ -41,7 +41,7 @@ std::vector<double> pair_settings(const Force *force)
 
 FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), state(nullptr), rates(nullptr), start(nullptr), wallbit(0),
-    rho_init(0.0), cfl(0.2), cfl_sound_reference(1), predictor_extrapolated(0), nrates(PREV),
+    rho_init(0.0), cfl(0.2), cfl_sound_reference(1), predictor_extrapolated(0), nrates(RATES_DT),
     geostatic_flag(0), surface_height(0.0),
     restored(0), last_dt(0.0), fresh_start(nullptr)
 {
@@ -82,7 +82,7 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "{}: predictor must be midpoint or extrapolated, not {}", style_name,
                    value);
       predictor_extrapolated = value == "extrapolated";
-      nrates = predictor_extrapolated ? NRATES : PREV;
+      nrates = predictor_extrapolated ? NRATES : RATES_DT;
     } else if (key == "matching" || key == "plastic") {
       if (!utils::strmatch(style, "^sph/elastoplastic"))
         error->all(FLERR, "{}: keyword {} is for fix sph/elastoplastic only", style_name, key);

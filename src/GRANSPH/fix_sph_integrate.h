@@ -32,9 +32,10 @@ class FixSPHIntegrate : public Fix {
   // first NCOMM columns are forward-communicated to ghosts.
   enum { RHO = 0, SIGMA = 1, REGIME = 7, VISC_PRESSURE = 8, NSTATE = 9, NCOMM = 7 };
   // RATES: what the pair style writes, and the acceleration of the same evaluation
-  // that the next predictor uses, with the step (RATES_DT) whose mid-point they are;
-  // from PREV on the same for the step before (only with predictor extrapolated, which
-  // alone allocates those columns: see nrates). START: the start of the step for the
+  // that the next predictor uses; from RATES_DT on, only with predictor extrapolated
+  // (which alone allocates those columns, see nrates, so that the default keeps the
+  // layout and restart files of before): the step whose mid-point they are, and from
+  // PREV the same for the step before. START: the start of the step for the
   // corrector, the wall velocity of the last evaluation, and STEPPED: the number of
   // steps, up to 2, whose evaluation the atom's rates (grains) or wall velocity (dummy
   // particles) come from; WALL_F: the grains' force on a dummy particle in the last
@@ -98,7 +99,7 @@ class FixSPHIntegrate : public Fix {
   double cfl;           // CFL factor of eq. 19; 0 keeps the LAMMPS timestep
   int cfl_sound_reference;    // eq. 19's sound speed at rho_init, not at each grain's density
   int predictor_extrapolated;    // the predictor's rates extrapolated to the step's start
-  int nrates;           // columns of `rates`: PREV, or NRATES with the step before's
+  int nrates;           // columns of `rates`: RATES_DT, or NRATES with the step before's
   int row_size() const { return NSTATE + nrates + NSTART; }    // all per-atom values
   int geostatic_flag;   // initialise a geostatic stress below surface_height
   double surface_height;
