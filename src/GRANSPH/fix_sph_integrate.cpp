@@ -468,17 +468,28 @@ int FixSPHIntegrate::pack_restart(int i, double *buf)
   return 1 + pack_exchange(i, buf + 1);
 }
 
-// files of earlier versions hold the state only: those atoms start without a step
+// Files of the other predictor's layout (a file of `predictor midpoint` read under
+// extrapolated, or the reverse) give the columns both have: the grain's next step
+// extrapolates once its own two mid-points are known. Files of earlier versions hold the
+// state only: those atoms start without a step.
 void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  const int size = static_cast<int>(extra[nlocal][m++]);
-  if (size == row_size() + 1)
-    unpack_exchange(nlocal, &extra[nlocal][m]);
-  else
-    for (int k = 0; k < NSTATE; ++k) state[nlocal][k] = extra[nlocal][m++];
+  const int size = static_cast<int>(extra[nlocal][m++]) - 1;
+  double *row = &extra[nlocal][m];
+  const int other_nrates = nrates == NRATES ? RATES_DT : NRATES;
+  if (size == row_size()) {
+    unpack_exchange(nlocal, row);
+  } else if (size == NSTATE + other_nrates + NSTART) {
+    memcpy(state[nlocal], row, NSTATE * sizeof(double));
+    for (int k = 0; k < nrates; ++k) rates[nlocal][k] = k < RATES_DT ? row[NSTATE + k] : 0.0;
+    memcpy(start[nlocal], row + NSTATE + other_nrates, NSTART * sizeof(double));
+    start[nlocal][STEPPED] = fmin(start[nlocal][STEPPED], 1.0);
+  } else {
+    memcpy(state[nlocal], row, NSTATE * sizeof(double));
+  }
   restored = 1;
 }
 
