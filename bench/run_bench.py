@@ -6,6 +6,7 @@ with --against, beside the plugin of an earlier commit.
 
   bench/run_bench.py [--case column|flume|jet]... [--size S]... [--repeat N] [--steps N]
                      [--against REF [--against-arch as-built|native|generic]]
+  bench/run_bench.py --flow [--tend T] [--repeat N] [--against REF]
 
 Cases (the examples' own inputs, for a fixed number of steps):
   column  examples/column_collapse, a = 0.5 (a sand column on three layers of dummy
@@ -24,6 +25,12 @@ Bench:smoke runs the script so, that it cannot rot; its figures mean nothing).
 --against REF: builds the plugin of git commit REF into bench/against/SHA/ (against
 the same LAMMPS) and runs it, on REF's own example inputs, beside the current one:
 the ratio is what a user gains over REF, in one run of this script.
+--flow: the time to solution rather than the cost of a step: the flume at dx = 25 mm,
+elastoplastic, from release through the impact (to t = 0.8 s, or --tend T: ctest
+Bench:flow_smoke runs it so), each configuration run
+to that time with its own defaults (timestep rule and constant, predictor); reported
+as simulated seconds per wall-clock second (LAMMPS' loop times, setup excluded). With
+--against it says what a user gains over REF on a whole flow, fewer steps included.
 --against-arch: REF's plugin as its own CMakeLists builds it (as-built, default), or
 for this machine (native) or any x86-64 (generic), to tell a code change's gain from
 the instruction set's: e.g. --against HEAD --against-arch generic.
@@ -34,6 +41,7 @@ import os
 import re
 import subprocess
 import sys
+import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.dirname(HERE)
@@ -50,10 +58,14 @@ SIZES = {
     "flume": {"1.2e5": ({"dx": 0.01, "model": "elastoplastic"}, 40)},    # the paper's dx
     "jet": {"1.1e5": ({"dx": 0.006}, 40)},
 }
+# --flow: a whole flow to a simulated time, each configuration with its own timestep
+FLOW = ("flume", {"dx": 0.025, "model": "elastoplastic", "tend": 0.8})
 KK = ["-k", "on", "t", "2", "-sf", "kk"]
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMP_PROC_BIND="spread", OMP_PLACES="threads")
 LOOP = re.compile(r"Loop time of (\S+) on \d+ procs for (\d+) steps with (\d+) atoms")
+# a run's last thermo line (step, then the flume's simulated time) and its loop time
+LAST_TIME = re.compile(r"^\s*\d+\s+(\S+).*\nLoop time of", re.M)
 GRAINS = re.compile(r"^\s*(\d+) atoms in group sand\s*$", re.M)    # the jet: all are grains
 
 
@@ -66,6 +78,25 @@ class Run:
 
     def once(self, variables, steps):
         """(atoms, grains, particle-steps per second) of one run"""
+        out = self.output(variables, steps)
+        seconds, nsteps, natoms = LOOP.findall(out)[-1]
+        grains = GRAINS.findall(out) or [natoms]
+        return int(natoms), int(grains[0]), int(nsteps) * int(natoms) / float(seconds)
+
+    def flow(self, variables):
+        """(steps, simulated seconds per second of all runs' loop times) of one run to the
+        input's end, in a scratch folder (the flume writes its force history there)"""
+        with tempfile.TemporaryDirectory() as scratch:
+            out = self.output(variables, 0, cwd=scratch)
+        loops = LOOP.findall(out)
+        times = LAST_TIME.findall(out)
+        if not times:
+            sys.exit(f"no simulated time in the output of {self.name}:\n{out[-2000:]}")
+        return (sum(int(n) for _, n, _ in loops),
+                float(times[-1]) / sum(float(seconds) for seconds, _, _ in loops))
+
+    def output(self, variables, steps, cwd=None):
+        """the screen output of one run, which must have timed a loop"""
         cmd = [LMP, "-in", self.script, "-var", "steps", str(steps), "-log", "none",
                "-echo", "none"] + self.flags
         for name, value in variables.items():
@@ -74,13 +105,10 @@ class Run:
             cmd = ["mpirun", "-np", str(self.ranks), "--bind-to", "core"] + cmd
         env = dict(ENV, **({"GRANSPH_BUILD": self.build} if self.build else {}))
         out = subprocess.run(cmd, capture_output=True, text=True, env=env,
-                             cwd=os.path.dirname(self.script)).stdout
-        loops = LOOP.findall(out)
-        if not loops:
+                             cwd=cwd or os.path.dirname(self.script)).stdout
+        if not LOOP.search(out):
             sys.exit(f"no timing from: {' '.join(cmd)}\n{out[-2000:]}")
-        seconds, nsteps, natoms = loops[-1]
-        grains = GRAINS.findall(out) or [natoms]
-        return int(natoms), int(grains[0]), int(nsteps) * int(natoms) / float(seconds)
+        return out
 
 
 def build_against(ref, arch):
@@ -161,12 +189,31 @@ def bench(case, label, variables, steps, repeat, against):
     sys.stdout.flush()
 
 
+def flow(tend, repeat, against):
+    """--flow: simulated seconds per wall-clock second of a whole flow, best of `repeat`"""
+    case, variables = FLOW
+    variables = dict(variables, tend=tend or variables["tend"])
+    runs = [run for run in runs_of(case, against) if run.ranks == 2 or run.flags]
+    rounds = [[run.flow(variables) for run in runs] for _ in range(repeat)]
+    best = {run.name: max(r[1] for r in results) for run, results in zip(runs, zip(*rounds))}
+    steps = {run.name: results[0][0] for run, results in zip(runs, zip(*rounds))}
+    print(f"\n{case} flow to t = {variables['tend']} s ({variables}), best of {repeat}")
+    print(f"  {'configuration':20s} {'steps':>8s} {'simulated s per s':>18s}")
+    for run in runs:
+        print(f"  {run.name:20s} {steps[run.name]:8d} {best[run.name]:18.3e}")
+    for label, num, den in ratios_of(set(best)):
+        print(f"  {label:20s} {rate(best, num) / rate(best, den):27.2f}")
+    sys.stdout.flush()
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--case", action="append", choices=list(SIZES))
     parser.add_argument("--size", action="append")
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--steps", type=int)
+    parser.add_argument("--flow", action="store_true")
+    parser.add_argument("--tend", type=float)
     parser.add_argument("--against", metavar="REF")
     parser.add_argument("--against-arch", choices=["as-built", "native", "generic"],
                         default="as-built")
@@ -174,6 +221,9 @@ def main():
     against = build_against(opts.against, opts.against_arch) if opts.against else None
     if against:
         print(f"REF = {opts.against}: its plugin ({opts.against_arch}) on its own inputs")
+    if opts.flow:
+        flow(opts.tend, opts.repeat, against)
+        return
     for case in opts.case or list(SIZES):
         for label, (variables, steps) in SIZES[case].items():
             if opts.size and label not in opts.size:
