@@ -169,10 +169,22 @@ def rate(rates, name):
     return rates[name]
 
 
+def best_of(runs, measure, repeat, index):
+    """every run measured `repeat` times, in turn; the rounds and each run's largest value
+    `index` of what `measure(run)` returns"""
+    rounds = [[measure(run) for run in runs] for _ in range(repeat)]
+    return rounds, {run.name: max(r[index] for r in results) for run, results in zip(runs, zip(*rounds))}
+
+
+def print_ratios(best, width):
+    for label, num, den in ratios_of(set(best)):
+        print(f"  {label:20s} {rate(best, num) / rate(best, den):{width}.2f}")
+    sys.stdout.flush()
+
+
 def bench(case, label, variables, steps, repeat, against):
     runs = runs_of(case, against)
-    rounds = [[run.once(variables, steps) for run in runs] for _ in range(repeat)]
-    best = {run.name: max(r[2] for r in results) for run, results in zip(runs, zip(*rounds))}
+    rounds, best = best_of(runs, lambda run: run.once(variables, steps), repeat, 2)
     atoms = {r[0] for results in rounds for r in results}
     if len(atoms) != 1:
         sys.exit(f"{case} {label}: the runs have different particle counts: {sorted(atoms)}")
@@ -184,9 +196,7 @@ def bench(case, label, variables, steps, repeat, against):
     for run in runs:
         # the peer's grains: its sand group, as ours
         print(f"  {run.name:20s} {best[run.name]:17.3e} {best[run.name] * grains / natoms:14.3e}")
-    for label_, num, den in ratios_of(set(best)):
-        print(f"  {label_:20s} {rate(best, num) / rate(best, den):17.2f}")
-    sys.stdout.flush()
+    print_ratios(best, 17)
 
 
 def flow(tend, repeat, against):
@@ -194,16 +204,13 @@ def flow(tend, repeat, against):
     case, variables = FLOW
     variables = dict(variables, tend=tend or variables["tend"])
     runs = [run for run in runs_of(case, against) if run.ranks == 2 or run.flags]
-    rounds = [[run.flow(variables) for run in runs] for _ in range(repeat)]
-    best = {run.name: max(r[1] for r in results) for run, results in zip(runs, zip(*rounds))}
-    steps = {run.name: results[0][0] for run, results in zip(runs, zip(*rounds))}
+    rounds, best = best_of(runs, lambda run: run.flow(variables), repeat, 1)
+    steps = {run.name: result[0] for run, result in zip(runs, rounds[0])}
     print(f"\n{case} flow to t = {variables['tend']} s ({variables}), best of {repeat}")
     print(f"  {'configuration':20s} {'steps':>8s} {'simulated s per s':>18s}")
     for run in runs:
         print(f"  {run.name:20s} {steps[run.name]:8d} {best[run.name]:18.3e}")
-    for label, num, den in ratios_of(set(best)):
-        print(f"  {label:20s} {rate(best, num) / rate(best, den):27.2f}")
-    sys.stdout.flush()
+    print_ratios(best, 27)
 
 
 def main():
