@@ -6,7 +6,7 @@ with --against, beside the plugin of an earlier commit.
 
   bench/run_bench.py [--case column|flume|jet]... [--size S]... [--repeat N] [--steps N]
                      [--against REF [--against-arch as-built|native|generic]]
-  bench/run_bench.py --flow [--tend T] [--repeat N] [--against REF]
+  bench/run_bench.py --flow [--case flume|jet]... [--tend T] [--repeat N] [--against REF]
 
 Cases (the examples' own inputs, for a fixed number of steps):
   column  examples/column_collapse, a = 0.5 (a sand column on three layers of dummy
@@ -26,8 +26,9 @@ Bench:smoke runs the script so, that it cannot rot; its figures mean nothing).
 the same LAMMPS) and runs it, on REF's own example inputs, beside the current one:
 the ratio is what a user gains over REF, in one run of this script.
 --flow: the time to solution rather than the cost of a step: the flume at dx = 25 mm,
-elastoplastic, from release through the impact (to t = 0.8 s, or --tend T: ctest
-Bench:flow_smoke runs it so), each configuration run
+elastoplastic, from release through the impact (to t = 0.8 s), and the jet collision at
+its example's dx = 8 mm to the end of its measurement (t = 0.03 s); --tend T ends each
+there instead (ctest Bench:flow_smoke runs the flume so); each configuration run
 to that time with its own defaults (timestep rule and constant, predictor); reported
 as simulated seconds per wall-clock second (LAMMPS' loop times, setup excluded). With
 --against it says what a user gains over REF on a whole flow, fewer steps included.
@@ -58,8 +59,10 @@ SIZES = {
     "flume": {"1.2e5": ({"dx": 0.01, "model": "elastoplastic"}, 40)},    # the paper's dx
     "jet": {"1.1e5": ({"dx": 0.006}, 40)},
 }
-# --flow: a whole flow to a simulated time, each configuration with its own timestep
-FLOW = ("flume", {"dx": 0.025, "model": "elastoplastic", "tend": 0.8})
+# --flow: whole flows to a simulated time (the input's variable that sets it), each
+# configuration with its own timestep
+FLOWS = {"flume": ({"dx": 0.025, "model": "elastoplastic", "tend": 0.8}, "tend"),
+         "jet": ({"dx": 0.008, "t2": 0.03}, "t2")}
 KK = ["-k", "on", "t", "2", "-sf", "kk"]
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMP_PROC_BIND="spread", OMP_PLACES="threads")
@@ -199,14 +202,14 @@ def bench(case, label, variables, steps, repeat, against):
     print_ratios(best, 17)
 
 
-def flow(tend, repeat, against):
+def flow(case, tend, repeat, against):
     """--flow: simulated seconds per wall-clock second of a whole flow, best of `repeat`"""
-    case, variables = FLOW
-    variables = dict(variables, tend=tend or variables["tend"])
+    variables, end = FLOWS[case]
+    variables = dict(variables, **{end: tend or variables[end]})
     runs = [run for run in runs_of(case, against) if run.ranks == 2 or run.flags]
     rounds, best = best_of(runs, lambda run: run.flow(variables), repeat, 1)
     steps = {run.name: result[0] for run, result in zip(runs, rounds[0])}
-    print(f"\n{case} flow to t = {variables['tend']} s ({variables}), best of {repeat}")
+    print(f"\n{case} flow to t = {variables[end]} s ({variables}), best of {repeat}")
     print(f"  {'configuration':20s} {'steps':>8s} {'simulated s per s':>18s}")
     for run in runs:
         print(f"  {run.name:20s} {steps[run.name]:8d} {best[run.name]:18.3e}")
@@ -225,11 +228,14 @@ def main():
     parser.add_argument("--against-arch", choices=["as-built", "native", "generic"],
                         default="as-built")
     opts = parser.parse_args()
+    if opts.flow and set(opts.case or []) - set(FLOWS):
+        parser.error(f"--flow times the cases {', '.join(FLOWS)}")
     against = build_against(opts.against, opts.against_arch) if opts.against else None
     if against:
         print(f"REF = {opts.against}: its plugin ({opts.against_arch}) on its own inputs")
     if opts.flow:
-        flow(opts.tend, opts.repeat, against)
+        for case in opts.case or list(FLOWS):
+            flow(case, opts.tend, opts.repeat, against)
         return
     for case in opts.case or list(SIZES):
         for label, (variables, steps) in SIZES[case].items():
