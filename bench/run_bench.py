@@ -67,7 +67,8 @@ KK = ["-k", "on", "t", "2", "-sf", "kk"]
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMP_PROC_BIND="spread", OMP_PLACES="threads")
 LOOP = re.compile(r"Loop time of (\S+) on \d+ procs for (\d+) steps with (\d+) atoms")
-# a run's last thermo line (step, then the flume's simulated time) and its loop time
+# a run's last thermo line (step, then the simulated time, as the flume and jet inputs
+# print it) and its loop time
 LAST_TIME = re.compile(r"^\s*\d+\s+(\S+).*\nLoop time of", re.M)
 GRAINS = re.compile(r"^\s*(\d+) atoms in group sand\s*$", re.M)    # the jet: all are grains
 
@@ -230,6 +231,10 @@ def main():
     opts = parser.parse_args()
     if opts.flow and set(opts.case or []) - set(FLOWS):
         parser.error(f"--flow times the cases {', '.join(FLOWS)}")
+    if opts.flow and (opts.size or opts.steps):
+        parser.error("--flow runs each flow to its end time: no --size or --steps")
+    if opts.tend and not opts.flow:
+        parser.error("--tend goes with --flow")
     against = build_against(opts.against, opts.against_arch) if opts.against else None
     if against:
         print(f"REF = {opts.against}: its plugin ({opts.against_arch}) on its own inputs")
