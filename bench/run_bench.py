@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """GRANSPH throughput on this machine: particle-steps and grain-steps per second of
 the examples' inputs, for the plain styles on 1 and 2 MPI ranks and the /kk styles
-on 2 OpenMP threads, beside LAMMPS' own SPH fluid on the column's particles and,
-with --against, beside the plugin of an earlier commit.
+on 2 OpenMP threads (the last two also with pair_style ... precision mixed), beside
+LAMMPS' own SPH fluid on the column's particles and, with --against, beside the
+plugin of an earlier commit.
 
   bench/run_bench.py [--case column|flume|jet]... [--size S]... [--repeat N] [--steps N]
                      [--against REF [--against-arch as-built|native|generic]]
@@ -64,6 +65,7 @@ SIZES = {
 FLOWS = {"flume": ({"dx": 0.025, "model": "elastoplastic", "tend": 0.8}, "tend"),
          "jet": ({"dx": 0.008, "t2": 0.03}, "t2")}
 KK = ["-k", "on", "t", "2", "-sf", "kk"]
+MIXED = "precision mixed"    # the pair style's option: the grains' sums in single precision
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMP_PROC_BIND="spread", OMP_PLACES="threads")
 LOOP = re.compile(r"Loop time of (\S+) on \d+ procs for (\d+) steps with (\d+) atoms")
@@ -76,9 +78,10 @@ GRAINS = re.compile(r"^\s*(\d+) atoms in group sand\s*$", re.M)    # the jet: al
 class Run:
     """one configuration: a LAMMPS input, ranks, command-line flags and plugin build"""
 
-    def __init__(self, name, script, ranks, flags=(), build=None):
+    def __init__(self, name, script, ranks, flags=(), build=None, pair_options=None):
         self.name, self.script, self.ranks = name, script, ranks
         self.flags, self.build = list(flags), build
+        self.pair_options = pair_options
 
     def once(self, variables, steps):
         """(atoms, grains, particle-steps per second) of one run"""
@@ -103,6 +106,8 @@ class Run:
         """the screen output of one run, which must have timed a loop"""
         cmd = [LMP, "-in", self.script, "-var", "steps", str(steps), "-log", "none",
                "-echo", "none"] + self.flags
+        if self.pair_options:
+            variables = dict(variables, pair_options=self.pair_options)
         for name, value in variables.items():
             cmd += ["-var", name, str(value)]
         if self.ranks > 1:
@@ -146,7 +151,9 @@ def runs_of(case, against):
     """the configurations to time for one case"""
     script = os.path.join(TOP, INPUTS[case])
     runs = [Run("plain 1 rank", script, 1), Run("plain 2 ranks", script, 2),
-            Run("kk 2 threads", script, 1, KK)]
+            Run("kk 2 threads", script, 1, KK),
+            Run("mixed plain 2 ranks", script, 2, pair_options=MIXED),
+            Run("mixed kk 2 threads", script, 1, KK, pair_options=MIXED)]
     if against:
         src, build = against
         old = os.path.join(src, INPUTS[case])
@@ -160,14 +167,20 @@ def runs_of(case, against):
 def ratios_of(names):
     """(label, numerator, denominator) of the ratios that the configurations allow"""
     wanted = [("best/tw(2)", "best", "taitwater 2 ranks"),
+              ("mixed best/tw(2)", "mixed best", "taitwater 2 ranks"),
               ("kk/plain(2)", "kk 2 threads", "plain 2 ranks"),
-              ("best/REF best", "best", "REF best")]
-    return [r for r in wanted if r[2] in names or r[2] == "REF best" and "REF plain 2 ranks" in names]
+              ("mixed/double best", "mixed best", "best"),
+              ("best/REF best", "best", "REF best"),
+              ("mixed best/REF best", "mixed best", "REF best")]
+    return [r for r in wanted if r[2] in names or r[2] == "best" or
+            r[2] == "REF best" and "REF plain 2 ranks" in names]
 
 
 def rate(rates, name):
     if name == "best":
         return max(rates["plain 2 ranks"], rates["kk 2 threads"])
+    if name == "mixed best":
+        return max(rates["mixed plain 2 ranks"], rates["mixed kk 2 threads"])
     if name == "REF best":
         return max(rates["REF plain 2 ranks"], rates["REF kk 2 threads"])
     return rates[name]
@@ -248,7 +261,8 @@ def main():
                 continue
             bench(case, label, variables, opts.steps or steps, opts.repeat, against)
     print("\n(particle-steps: all particles, grains and dummies; grain-steps: grains only. "
-          "best = the faster of plain on 2 ranks and kk on 2 threads)")
+          "best = the faster of plain on 2 ranks and kk on 2 threads, in double precision; "
+          "mixed best = the same under pair_style ... precision mixed)")
 
 
 if __name__ == "__main__":

@@ -32,9 +32,12 @@ class SPHStateKokkos {
 template <class DeviceType>
 using ParticlePolicy = Kokkos::RangePolicy<DeviceType, Kokkos::Schedule<Kokkos::Dynamic>>;
 
-template <class DeviceType> struct DeviceParticles {
+// Particle: GRANSPH::PairParticle, or PairParticleSingle for the grains' sums under
+// `precision mixed`
+template <class DeviceType, class Particle = GRANSPH::PairParticle> struct DeviceParticles {
   typedef ArrayTypes<DeviceType> AT;
-  Kokkos::View<const GRANSPH::PairParticle *, DeviceType> particles;
+  using Real = decltype(Particle::rho);
+  Kokkos::View<const Particle *, DeviceType> particles;
   typename AT::t_neighbors_2d neighbors;
   typename AT::t_int_1d_randomread numneigh, mask;
   int granularbit, wallbit;
@@ -46,9 +49,18 @@ template <class DeviceType> struct DeviceParticles {
   // with wall_friction, 1 and 4 per atom
   Kokkos::View<const double *, DeviceType> friction_mu, friction_slide;
 
+  // one particle's row of the list: contiguous on the host (LayoutRight), strided on GPUs
+  struct NeighbourRow {
+    decltype(Kokkos::subview(typename AT::t_neighbors_2d(), 0, Kokkos::ALL)) row;
+    KOKKOS_INLINE_FUNCTION int operator()(int k) const { return row(k) & NEIGHMASK; }
+  };
+
   KOKKOS_INLINE_FUNCTION int num_neighbours(int i) const { return numneigh(i); }
-  KOKKOS_INLINE_FUNCTION int neighbour(int i, int k) const { return neighbors(i, k) & NEIGHMASK; }
-  KOKKOS_INLINE_FUNCTION const GRANSPH::PairParticle &particle(int i) const { return particles(i); }
+  KOKKOS_INLINE_FUNCTION NeighbourRow neighbours(int i) const
+  {
+    return {Kokkos::subview(neighbors, i, Kokkos::ALL)};
+  }
+  KOKKOS_INLINE_FUNCTION const Particle &particle(int i) const { return particles(i); }
   KOKKOS_INLINE_FUNCTION bool granular(int i) const { return mask(i) & granularbit; }
   KOKKOS_INLINE_FUNCTION bool wall(int i) const { return mask(i) & wallbit; }
   KOKKOS_INLINE_FUNCTION double normal(int i, int a) const { return normals(3 * i + a); }
@@ -56,6 +68,28 @@ template <class DeviceType> struct DeviceParticles {
   KOKKOS_INLINE_FUNCTION double slide(int i, int k) const
   {
     return friction_slide(GRANSPH::SLIDE_VALUES * i + k);
+  }
+
+  // the same atoms and settings over `single`, the particles in single precision
+  DeviceParticles<DeviceType, GRANSPH::PairParticleSingle>
+  in_single(Kokkos::View<const GRANSPH::PairParticleSingle *, DeviceType> single) const
+  {
+    DeviceParticles<DeviceType, GRANSPH::PairParticleSingle> p;
+    p.particles = single;
+    p.neighbors = neighbors;
+    p.numneigh = numneigh;
+    p.mask = mask;
+    p.granularbit = granularbit;
+    p.wallbit = wallbit;
+    p.kernel = kernel;
+    p.visc = visc;
+    p.wall_normal = wall_normal;
+    p.shape_sums = shape_sums;
+    p.wall_friction = wall_friction;
+    p.normals = normals;
+    p.friction_mu = friction_mu;
+    p.friction_slide = friction_slide;
+    return p;
   }
 };
 

@@ -5,10 +5,15 @@
    and writes to that particle only: no atomics, no scatter.
    `Particles` is an accessor with
 
-     int    num_neighbours(int i), neighbour(int i, int k)  (masked)
-     const GRANSPH::PairParticle &particle(int i)  (every atom in the lists: one
-                          that is neither grain nor dummy massless, so that its
-                          values are finite)
+     using Real          (the arithmetic of granular_rates: double, or float under the
+                          pair style's `precision mixed`)
+     int    num_neighbours(int i)
+     neighbours(int i)    (the neighbour list of i, n = neighbours(i); n(k) is the k-th
+                          neighbour's index, masked: taken once per particle, so that
+                          the loop reads the list as one contiguous row)
+     particle(int i)      (a PairParticle, or a PairParticleSingle where Real is float;
+                          every atom in the lists: one that is neither grain nor dummy
+                          massless, so that its values are finite)
      bool   granular(int i), wall(int i)
      GRANSPH::WendlandC2 kernel; GRANSPH::Viscosity visc
      bool   wall_normal  (dummy neighbours enter drho and grad_v along the wall
@@ -65,8 +70,9 @@ KOKKOS_INLINE_FUNCTION bool has_coincident_neighbour(const Particles &p, int i)
   const double tiny = coincident_rsq(p.kernel.h);
   const PairParticle &pi = p.particle(i);
   const int n = p.num_neighbours(i);
+  const auto neighbours = p.neighbours(i);
   for (int k = 0; k < n; ++k) {
-    const int j = p.neighbour(i, k);
+    const int j = neighbours(k);
     if (!p.granular(j) && !(i_granular && p.wall(j))) continue;
     const PairParticle &pj = p.particle(j);
     double rsq = 0.0;
@@ -92,92 +98,93 @@ template <bool WALL_NORMAL, bool SHAPE, bool VIRIAL, bool FRICTION, class Partic
 KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir,
                                                     double *slide)
 {
-  const PairParticle &pi = p.particle(i);
-  const double xi = pi.x[0], yi = pi.x[1], zi = pi.x[2];
-  const double vxi = pi.v[0], vyi = pi.v[1], vzi = pi.v[2];
-  const double rho_i = pi.rho, c_i = pi.c, inv_rho_i = pi.inv_rho, m_i = pi.mass;
-  const double sxx_i = pi.sigma.xx, syy_i = pi.sigma.yy, szz_i = pi.sigma.zz;
-  const double sxy_i = pi.sigma.xy, sxz_i = pi.sigma.xz, syz_i = pi.sigma.yz;
-  // copies of the settings: read in the loop without a condition on a lane
-  const WendlandC2 kernel = p.kernel;
+  using Real = typename Particles::Real;    // double, or float under `precision mixed`
+  const auto &pi = p.particle(i);
+  const Real xi = pi.x[0], yi = pi.x[1], zi = pi.x[2];
+  const Real vxi = pi.v[0], vyi = pi.v[1], vzi = pi.v[2];
+  const Real rho_i = pi.rho, c_i = pi.c, inv_rho_i = pi.inv_rho, m_i = pi.mass;
+  const Real sxx_i = pi.sigma.xx, syy_i = pi.sigma.yy, szz_i = pi.sigma.zz;
+  const Real sxy_i = pi.sigma.xy, sxz_i = pi.sigma.xz, syz_i = pi.sigma.yz;
+  // copies of the settings, in the sums' precision: read in the loop without a
+  // condition on a lane, or a conversion
+  const WendlandC2Of<Real> kernel = p.kernel.template in_precision<Real>();
   const Viscosity viscosity = p.visc;
-  const double cutsq = kernel.cutsq();
+  const Real cutsq = kernel.cutsq(), h = kernel.h;
 
-  double drho = 0.0, ax = 0.0, ay = 0.0, az = 0.0;
+  Real drho = 0, ax = 0, ay = 0, az = 0;
   // grad_v[a][b] = dv_a/dx_b
-  double lxx = 0.0, lxy = 0.0, lxz = 0.0, lyx = 0.0, lyy = 0.0, lyz = 0.0, lzx = 0.0,
-         lzy = 0.0, lzz = 0.0;
-  double kxx = 0.0, kyy = 0.0, kzz = 0.0, kxy = 0.0, kxz = 0.0, kyz = 0.0;    // shape
-  double w_sum = 0.0, visc_w = 0.0;
+  Real lxx = 0, lxy = 0, lxz = 0, lyx = 0, lyy = 0, lyz = 0, lzx = 0, lzy = 0, lzz = 0;
+  Real kxx = 0, kyy = 0, kzz = 0, kxy = 0, kxz = 0, kyz = 0;    // shape
+  Real w_sum = 0, visc_w = 0;
   // WallVelocitySums: drho (d..), grad_v (g..), offset (o.)
-  double dxx = 0.0, dxy = 0.0, dxz = 0.0, dyx = 0.0, dyy = 0.0, dyz = 0.0, dzx = 0.0,
-         dzy = 0.0, dzz = 0.0;
-  double gxx = 0.0, gxy = 0.0, gxz = 0.0, gyx = 0.0, gyy = 0.0, gyz = 0.0, gzx = 0.0,
-         gzy = 0.0, gzz = 0.0;
-  double ox = 0.0, oy = 0.0, oz = 0.0;
-  double v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0, v4 = 0.0, v5 = 0.0;
+  Real dxx = 0, dxy = 0, dxz = 0, dyx = 0, dyy = 0, dyz = 0, dzx = 0, dzy = 0, dzz = 0;
+  Real gxx = 0, gxy = 0, gxz = 0, gyx = 0, gyy = 0, gyz = 0, gzx = 0, gzy = 0, gzz = 0;
+  Real ox = 0, oy = 0, oz = 0;
+  Real v0 = 0, v1 = 0, v2 = 0, v3 = 0, v4 = 0, v5 = 0;
   // WallFrictionSums (f..), and the virial of its pairs' normal (n.) and tangential (t.)
   // parts, and the moment q. of their limits (the tangential virial while sliding)
-  double fax = 0.0, fay = 0.0, faz = 0.0, fnx = 0.0, fny = 0.0, fnz = 0.0, f_lim = 0.0;
-  double n0 = 0.0, n1 = 0.0, n2 = 0.0, n3 = 0.0, n4 = 0.0, n5 = 0.0;
-  double t0 = 0.0, t1 = 0.0, t2 = 0.0, t3 = 0.0, t4 = 0.0, t5 = 0.0;
-  double qx = 0.0, qy = 0.0, qz = 0.0;
+  Real fax = 0, fay = 0, faz = 0, fnx = 0, fny = 0, fnz = 0, f_lim = 0;
+  Real n0 = 0, n1 = 0, n2 = 0, n3 = 0, n4 = 0, n5 = 0;
+  Real t0 = 0, t1 = 0, t2 = 0, t3 = 0, t4 = 0, t5 = 0;
+  Real qx = 0, qy = 0, qz = 0;
 
   const int n = p.num_neighbours(i);
+  const auto neighbours = p.neighbours(i);
   GRANSPH_SIMD_SUM(drho, ax, ay, az, lxx, lxy, lxz, lyx, lyy, lyz, lzx, lzy, lzz, kxx, kyy,
                    kzz, kxy, kxz, kyz, w_sum, visc_w, dxx, dxy, dxz, dyx, dyy, dyz, dzx, dzy,
                    dzz, gxx, gxy, gxz, gyx, gyy, gyz, gzx, gzy, gzz, ox, oy, oz, v0, v1, v2,
                    v3, v4, v5, fax, fay, faz, fnx, fny, fnz, f_lim, n0, n1, n2, n3, n4, n5,
                    t0, t1, t2, t3, t4, t5, qx, qy, qz)
   for (int k = 0; k < n; ++k) {
-    const int j = p.neighbour(i, k);
-    const PairParticle &pj = p.particle(j);
+    const int j = neighbours(k);
+    const auto &pj = p.particle(j);
     const bool grain = p.granular(j), dummy = p.wall(j);
-    const double rx = xi - pj.x[0], ry = yi - pj.x[1], rz = zi - pj.x[2];
-    const double rsq = rx * rx + ry * ry + rz * rz;
+    const Real rx = xi - pj.x[0], ry = yi - pj.x[1], rz = zi - pj.x[2];
+    const Real rsq = rx * rx + ry * ry + rz * rz;
     const bool inside = (grain || dummy) && rsq < cutsq;
-    const double q = kernel.q(rsq);
-    const double w = inside ? kernel.w_inside(q) : 0.0;
-    const double fw = inside ? kernel.grad_factor_inside(q) : 0.0;
-    const double gwx = fw * rx, gwy = fw * ry, gwz = fw * rz;    // grad_i W
-    const double dvx = vxi - pj.v[0], dvy = vyi - pj.v[1], dvz = vzi - pj.v[2];
-    const double pi_ij = monaghan_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, kernel.h,
-                                            viscosity, 0.5 * (c_i + pj.c), 0.5 * (rho_i + pj.rho));
-    const double visc = grain || viscosity.walls ? pi_ij : 0.0;
+    const Real q = kernel.q(rsq);
+    const Real w = inside ? kernel.w_inside(q) : Real(0);
+    const Real fw = inside ? kernel.grad_factor_inside(q) : Real(0);
+    const Real gwx = fw * rx, gwy = fw * ry, gwz = fw * rz;    // grad_i W
+    const Real dvx = vxi - pj.v[0], dvy = vyi - pj.v[1], dvz = vzi - pj.v[2];
+    const Real pi_ij = monaghan_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, h, viscosity,
+                                          Real(0.5) * (c_i + pj.c), Real(0.5) * (rho_i + pj.rho));
+    const Real visc = grain || viscosity.walls ? pi_ij : Real(0);
 
     // eq. 6b: the acceleration
-    const double inv_rho_ij = inv_rho_i * pj.inv_rho;
-    const double sxx = sxx_i + pj.sigma.xx, syy = syy_i + pj.sigma.yy, szz = szz_i + pj.sigma.zz;
-    const double sxy = sxy_i + pj.sigma.xy, sxz = sxz_i + pj.sigma.xz, syz = syz_i + pj.sigma.yz;
-    const double tx = stress_gradient(sxx, sxy, sxz, inv_rho_ij, visc, gwx, gwy, gwz, gwx);
-    const double ty = stress_gradient(sxy, syy, syz, inv_rho_ij, visc, gwx, gwy, gwz, gwy);
-    const double tz = stress_gradient(sxz, syz, szz, inv_rho_ij, visc, gwx, gwy, gwz, gwz);
-    const double m = pj.mass, volume = m * pj.inv_rho;
+    const Real inv_rho_ij = inv_rho_i * pj.inv_rho;
+    const Real sxx = sxx_i + pj.sigma.xx, syy = syy_i + pj.sigma.yy, szz = szz_i + pj.sigma.zz;
+    const Real sxy = sxy_i + pj.sigma.xy, sxz = sxz_i + pj.sigma.xz, syz = syz_i + pj.sigma.yz;
+    const Real tx = stress_gradient(sxx, sxy, sxz, inv_rho_ij, visc, gwx, gwy, gwz, gwx);
+    const Real ty = stress_gradient(sxy, syy, syz, inv_rho_ij, visc, gwx, gwy, gwz, gwy);
+    const Real tz = stress_gradient(sxz, syz, szz, inv_rho_ij, visc, gwx, gwy, gwz, gwz);
+    const Real m = pj.mass, volume = m * pj.inv_rho;
     // a dummy of a wall with a friction of its own: its push goes to the friction sums,
     // along its normal (nx, ny, nz; zeros for the others)
     bool limited = false, slip = false;
-    double nx = 0.0, ny = 0.0, nz = 0.0;
+    Real nx = 0, ny = 0, nz = 0;
     if (FRICTION) {
-      const double mu = p.friction(j);
-      limited = dummy && mu >= 0.0;
-      slip = limited && mu == 0.0;
-      nx = limited ? p.normal(j, 0) : 0.0;
-      ny = limited ? p.normal(j, 1) : 0.0;
-      nz = limited ? p.normal(j, 2) : 0.0;
-      const double an = m * (tx * nx + ty * ny + tz * nz);
-      fax += limited ? m * tx : 0.0;
-      fay += limited ? m * ty : 0.0;
-      faz += limited ? m * tz : 0.0;
+      const Real mu = p.friction(j);
+      limited = dummy && mu >= 0;
+      slip = limited && mu == 0;
+      nx = limited ? Real(p.normal(j, 0)) : Real(0);
+      ny = limited ? Real(p.normal(j, 1)) : Real(0);
+      nz = limited ? Real(p.normal(j, 2)) : Real(0);
+      const Real an = m * (tx * nx + ty * ny + tz * nz);
+      fax += limited ? m * tx : Real(0);
+      fay += limited ? m * ty : Real(0);
+      faz += limited ? m * tz : Real(0);
       fnx += an * nx;
       fny += an * ny;
       fnz += an * nz;
-      f_lim += limited ? mu * an : 0.0;
+      f_lim += limited ? mu * an : Real(0);
       if (VIRIAL) {    // F = m_i (a_n + a_t), 0.5 x_ij (x) F for either part
-        const double hn = limited ? 0.5 * m_i * an : 0.0, ht = limited ? 0.5 * m_i : 0.0;
+        const Real hn = limited ? Real(0.5) * m_i * an : Real(0),
+                   ht = limited ? Real(0.5) * m_i : Real(0);
         qx += hn * mu * rx;
         qy += hn * mu * ry;
         qz += hn * mu * rz;
-        const double atx = m * tx - an * nx, aty = m * ty - an * ny, atz = m * tz - an * nz;
+        const Real atx = m * tx - an * nx, aty = m * ty - an * ny, atz = m * tz - an * nz;
         n0 += hn * rx * nx;
         n1 += hn * ry * ny;
         n2 += hn * rz * nz;
@@ -192,30 +199,30 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
         t5 += ht * ry * atz;
       }
     }
-    const double m_a = limited ? 0.0 : m;
+    const Real m_a = limited ? Real(0) : m;
     ax += m_a * tx;
     ay += m_a * ty;
     az += m_a * tz;
     // the relative velocity in drho and grad_v: that along the normal of a slip wall
-    const double dv_n = dvx * nx + dvy * ny + dvz * nz;
-    const double ux = slip ? dv_n * nx : dvx, uy = slip ? dv_n * ny : dvy,
+    const Real dv_n = dvx * nx + dvy * ny + dvz * nz;
+    const Real ux = slip ? dv_n * nx : dvx, uy = slip ? dv_n * ny : dvy,
                  uz = slip ? dv_n * nz : dvz;
 
     // eq. 6a and the velocity gradient, v_ji (x) grad_i W = -dv (x) grad_i W weighted by
     // the volume m/rho; under WALL_NORMAL, of a dummy with its own normal n through
     // (n . grad_i W) n, of one without through the wall sums
-    double ex = gwx, ey = gwy, ez = gwz;
+    Real ex = gwx, ey = gwy, ez = gwz;
     bool to_wall = false;
     if (WALL_NORMAL) {
-      const double nx = p.normal(j, 0), ny = p.normal(j, 1), nz = p.normal(j, 2);
-      const bool own = dummy && nx * nx + ny * ny + nz * nz > 0.0;
-      const double gn = nx * gwx + ny * gwy + nz * gwz;
+      const Real nx = p.normal(j, 0), ny = p.normal(j, 1), nz = p.normal(j, 2);
+      const bool own = dummy && nx * nx + ny * ny + nz * nz > Real(0);
+      const Real gn = nx * gwx + ny * gwy + nz * gwz;
       ex = own ? gn * nx : gwx;
       ey = own ? gn * ny : gwy;
       ez = own ? gn * nz : gwz;
       to_wall = dummy && !own;
     }
-    const double m_r = to_wall ? 0.0 : m, s_r = to_wall ? 0.0 : -volume;
+    const Real m_r = to_wall ? Real(0) : m, s_r = to_wall ? Real(0) : -volume;
     drho += m_r * (ux * ex + uy * ey + uz * ez);
     lxx += s_r * ux * ex;
     lxy += s_r * ux * ey;
@@ -236,9 +243,9 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     }
     // the kernel-weighted sums of the viscous-pressure diagnostic, rho_i rho_j Pi_ij / 2
     w_sum += volume * w;
-    visc_w += volume * w * (0.5 * rho_i * pj.rho * visc);
+    visc_w += volume * w * (Real(0.5) * rho_i * pj.rho * visc);
     if (WALL_NORMAL) {
-      const double m_w = to_wall ? m : 0.0, s_w = to_wall ? -volume : 0.0;
+      const Real m_w = to_wall ? m : Real(0), s_w = to_wall ? -volume : Real(0);
       dxx += m_w * ux * gwx;
       dxy += m_w * ux * gwy;
       dxz += m_w * ux * gwz;
@@ -257,13 +264,13 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
       gzx += s_w * uz * gwx;
       gzy += s_w * uz * gwy;
       gzz += s_w * uz * gwz;
-      const double vw = to_wall ? volume * w : 0.0;
+      const Real vw = to_wall ? volume * w : Real(0);
       ox += vw * rx;
       oy += vw * ry;
       oz += vw * rz;
     }
     if (VIRIAL) {    // F_ij = m_i m_j t (a friction wall's pair: above)
-      const double mm = 0.5 * m_i * m_a;
+      const Real mm = Real(0.5) * m_i * m_a;
       v0 += mm * rx * tx;
       v1 += mm * ry * ty;
       v2 += mm * rz * tz;
@@ -350,9 +357,10 @@ template <class Particles> KOKKOS_INLINE_FUNCTION WallSums wall_sums(const Parti
   double sxx = 0.0, syy = 0.0, szz = 0.0, sxy = 0.0, sxz = 0.0, syz = 0.0;
   double rho_rx = 0.0, rho_ry = 0.0, rho_rz = 0.0, w_sum = 0.0;
   const int n = p.num_neighbours(d);
+  const auto neighbours = p.neighbours(d);
   GRANSPH_SIMD_SUM(sxx, syy, szz, sxy, sxz, syz, rho_rx, rho_ry, rho_rz, w_sum)
   for (int k = 0; k < n; ++k) {
-    const int j = p.neighbour(d, k);
+    const int j = neighbours(k);
     const PairParticle &pk = p.particle(j);
     // r_dk = x_d - x_k
     const double rx = xd - pk.x[0], ry = yd - pk.x[1], rz = zd - pk.x[2];
@@ -397,9 +405,10 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
   double fx = 0.0, fy = 0.0, fz = 0.0;
   double v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0, v4 = 0.0, v5 = 0.0;
   const int n = p.num_neighbours(d);
+  const auto neighbours = p.neighbours(d);
   GRANSPH_SIMD_SUM(fx, fy, fz, v0, v1, v2, v3, v4, v5)
   for (int k = 0; k < n; ++k) {
-    const int j = p.neighbour(d, k);
+    const int j = neighbours(k);
     const PairParticle &pj = p.particle(j);
     const double rx = xd - pj.x[0], ry = yd - pj.x[1], rz = zd - pj.x[2];
     const double rsq = rx * rx + ry * ry + rz * rz;

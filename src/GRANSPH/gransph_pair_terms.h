@@ -11,6 +11,7 @@
 #ifndef LMP_GRANSPH_PAIR_TERMS_H
 #define LMP_GRANSPH_PAIR_TERMS_H
 
+#include "gransph_kernel.h"
 #include "gransph_tensor.h"
 
 namespace GRANSPH {
@@ -52,18 +53,48 @@ struct alignas(64) PairParticle {
   }
 };
 
+// PairParticle in single precision, for the grains' sums under the pair style's
+// `precision mixed`: one cache line, and twice the pairs per vector instruction. Its
+// position is taken from an origin near the particles (their sub-domain's centre), so
+// that single precision rounds it, and so each pair's distance, relative to the
+// sub-domain's size rather than to the distance from the box's origin.
+struct alignas(64) PairParticleSingle {
+  struct Stress {
+    float xx, yy, zz, xy, xz, yz;
+  };
+  float x[3], v[3];
+  float rho, c;
+  Stress sigma;
+  float mass, inv_rho;
+
+  KOKKOS_INLINE_FUNCTION static PairParticleSingle of(const PairParticle &p,
+                                                      const double *origin)
+  {
+    const Sym3 &s = p.sigma;
+    return {{float(p.x[0] - origin[0]), float(p.x[1] - origin[1]), float(p.x[2] - origin[2])},
+            {float(p.v[0]), float(p.v[1]), float(p.v[2])},
+            float(p.rho),
+            float(p.c),
+            {float(s.xx), float(s.yy), float(s.zz), float(s.xy), float(s.xz), float(s.yz)},
+            float(p.mass),
+            float(p.inv_rho)};
+  }
+};
+
 // Monaghan artificial viscosity Pi_ij, eq. 7, with phi = 0.1 h in the denominator, from
 // v.x = v_ij . x_ij, r^2 and the pair's mean sound speed c_ij and density rho_ij. Acts
 // only between approaching particles (v.x < 0): min(v.x, 0) = (v.x - |v.x|) / 2, exact
 // and without a branch, gives Pi = 0 for the others. (-alpha c_ij phi_ij + beta
 // phi_ij^2) / rho_ij with phi_ij = h v.x / d, d = r^2 + 0.01 h^2, is taken over one
 // denominator.
-KOKKOS_INLINE_FUNCTION double monaghan_viscosity(double vdotx, double rsq, double h,
-                                                 const Viscosity &visc, double c_ij, double rho_ij)
+// In the precision Real of the pair sums.
+template <class Real>
+KOKKOS_INLINE_FUNCTION Real monaghan_viscosity(Real vdotx, Real rsq, Real h, const Viscosity &visc,
+                                               Real c_ij, Real rho_ij)
 {
-  const double hv = h * 0.5 * (vdotx - fabs(vdotx));
-  const double d = rsq + 0.01 * h * h;
-  return hv * (visc.beta * hv - visc.alpha * c_ij * d) / (d * d * rho_ij);
+  const Real hv = h * Real(0.5) * (vdotx - magnitude(vdotx));
+  const Real d = rsq + Real(0.01) * h * h;
+  return hv * (Real(visc.beta) * hv - Real(visc.alpha) * c_ij * d) / (d * d * rho_ij);
 }
 
 // Component a of eq. 6b's bracket applied to grad_i W, ((s_i + s_j)/(rho_i rho_j) -
@@ -72,9 +103,9 @@ KOKKOS_INLINE_FUNCTION double monaghan_viscosity(double vdotx, double rsq, doubl
 // bracket is symmetric and grad_j W = -grad_i W, so j gets the opposite per unit mass of
 // i. The viscous term is a pressure (Monaghan 1992), hence the minus sign under our
 // tension-positive stress; the paper's "+ Pi" assumes the opposite sign of Pi.
-KOKKOS_INLINE_FUNCTION double stress_gradient(double s_ax, double s_ay, double s_az,
-                                              double inv_rho_ij, double visc, double gx,
-                                              double gy, double gz, double g_a)
+template <class Real>
+KOKKOS_INLINE_FUNCTION Real stress_gradient(Real s_ax, Real s_ay, Real s_az, Real inv_rho_ij,
+                                            Real visc, Real gx, Real gy, Real gz, Real g_a)
 {
   return inv_rho_ij * (s_ax * gx + s_ay * gy + s_az * gz) - visc * g_a;
 }

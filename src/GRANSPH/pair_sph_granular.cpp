@@ -41,9 +41,12 @@ namespace {
 constexpr int SLIDE = GRANSPH::SLIDE_VALUES;
 
 
-// Host accessor for the shared neighbour sums (gransph_neighbour_sums.h).
-struct HostParticles {
-  const PairParticle *particles;
+// Host accessor for the shared neighbour sums (gransph_neighbour_sums.h), over the
+// particles as Particle holds them (PairParticle, or PairParticleSingle for the grains'
+// sums under `precision mixed`).
+template <class Particle> struct HostParticlesOf {
+  using Real = decltype(Particle::rho);
+  const Particle *particles;
   int **firstneigh;
   const int *numneigh, *mask;
   int granularbit, wallbit;
@@ -53,15 +56,31 @@ struct HostParticles {
   const double *normals;    // 3 per atom, with wall_normal or wall_friction
   const double *friction_mu, *friction_slide;    // 1 and 4 per atom, with wall_friction
 
+  struct NeighbourRow {
+    const int *row;
+    int operator()(int k) const { return row[k] & NEIGHMASK; }
+  };
+
   int num_neighbours(int i) const { return numneigh[i]; }
-  int neighbour(int i, int k) const { return firstneigh[i][k] & NEIGHMASK; }
-  const PairParticle &particle(int i) const { return particles[i]; }
+  NeighbourRow neighbours(int i) const { return {firstneigh[i]}; }
+  const Particle &particle(int i) const { return particles[i]; }
+
   bool granular(int i) const { return mask[i] & granularbit; }
   bool wall(int i) const { return mask[i] & wallbit; }
   double normal(int i, int a) const { return normals[3 * i + a]; }
   double friction(int i) const { return friction_mu[i]; }
   double slide(int i, int k) const { return friction_slide[SLIDE * i + k]; }
+
+  // the same atoms and settings over `single`, the particles in single precision
+  HostParticlesOf<GRANSPH::PairParticleSingle>
+  in_single(const GRANSPH::PairParticleSingle *single) const
+  {
+    return {single,      firstneigh, numneigh, mask,      granularbit,   wallbit,
+            kernel,      visc,       wall_normal, shape_sums, wall_friction, normals,
+            friction_mu, friction_slide};
+  }
 };
+using HostParticles = HostParticlesOf<PairParticle>;
 
 }    // namespace
 
@@ -70,8 +89,9 @@ struct HostParticles {
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
     Pair(lmp), h(0.0), visc{DEFAULT_ALPHA, DEFAULT_BETA, false, GRANSPH::Viscosity::BULK, 0.0},
     corrected_gradient(0), wall_normal(0), wall_stress_mode(GRANSPH::WallSums::RATIO),
-    integrator(nullptr), nmax(0), particles(nullptr), normals(nullptr), friction(nullptr),
-    slide(nullptr)
+    mixed_precision(0), warned_far_from_origin(false), integrator(nullptr), nmax(0),
+    particles(nullptr),
+    particles_single(nullptr), normals(nullptr), friction(nullptr), slide(nullptr)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -81,6 +101,7 @@ PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
 PairSPHGranular::~PairSPHGranular()
 {
   memory->sfree(particles);
+  memory->sfree(particles_single);
   memory->sfree(normals);
   memory->sfree(friction);
   memory->sfree(slide);
@@ -100,10 +121,10 @@ void PairSPHGranular::compute(int eflag, int vflag)
   const int nall = atom->nlocal + atom->nghost;
   fix.forward_comm_state();
   const bool limited = fix.wallbit && !friction_walls.empty();
-  // wall/gradient normal or wall/friction may be set by a pair_style issued again after
-  // the arrays grew
-  const bool grown =
-      nall > nmax || ((wall_normal || limited) && !normals) || (limited && !friction);
+  // wall/gradient normal, wall/friction or precision mixed may be set by a pair_style
+  // issued again after the arrays grew
+  const bool grown = nall > nmax || ((wall_normal || limited) && !normals) ||
+      (limited && !friction) || (mixed_precision && !particles_single);
   if (grown) grow(atom->nmax);
   pack_particles(0, nall);
   // normals and frictions follow the atoms, which change places only at a run's setup or
@@ -134,7 +155,11 @@ void PairSPHGranular::compute(int eflag, int vflag)
     fix.forward_comm_state();
     pack_particles(atom->nlocal, nall);
   }
-  grains(p);
+  if (mixed_precision) {
+    pack_particles_single(nall);
+    grains(p.in_single(particles_single));
+  } else
+    grains(p);
   if (limited) {
     forward_comm_friction_slide();
     wall_forces(p);
@@ -272,10 +297,15 @@ void PairSPHGranular::grow(int n)
 {
   nmax = n;
   memory->sfree(particles);
+  memory->sfree(particles_single);
   memory->sfree(normals);
   memory->sfree(friction);
   memory->sfree(slide);
   particles = (PairParticle *) memory->smalloc(sizeof(PairParticle) * nmax, "pair:particles");
+  particles_single = mixed_precision ? (GRANSPH::PairParticleSingle *) memory->smalloc(
+                                           sizeof(GRANSPH::PairParticleSingle) * nmax,
+                                           "pair:particles_single")
+                                     : nullptr;
   const bool limited = !friction_walls.empty();
   normals = wall_normal || limited
       ? (double *) memory->smalloc(sizeof(double) * 3 * nmax, "pair:normals")
@@ -405,6 +435,44 @@ void PairSPHGranular::pack_particles(int from, int to)
   }
 }
 
+// the single-precision copy of atoms [0, n) for the grains' sums, with the dummies'
+// stress of this evaluation in place
+void PairSPHGranular::pack_particles_single(int n)
+{
+  double origin[3];
+  single_precision_origin(origin);
+  for (int i = 0; i < n; ++i)
+    particles_single[i] = GRANSPH::PairParticleSingle::of(particles[i], origin);
+}
+
+// Under precision mixed: the centre of this rank's sub-domain (of the box if it is
+// triclinic), from which the single-precision positions are taken. At a run's setup,
+// once, a warning if a particle can lie so far from it (half the sub-domain's diagonal
+// and the cut-off) that single precision rounds its pair distances by more than a ten-
+// thousandth of h.
+void PairSPHGranular::single_precision_origin(double *origin)
+{
+  const bool sub = !domain->triclinic;
+  const double *lo = sub ? domain->sublo : domain->boxlo, *hi = sub ? domain->subhi : domain->boxhi;
+  double half_diagonal_sq = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    origin[a] = 0.5 * (lo[a] + hi[a]);
+    half_diagonal_sq += 0.25 * (hi[a] - lo[a]) * (hi[a] - lo[a]);
+  }
+  if (!update->setupflag || warned_far_from_origin) return;
+  double reach = sqrt(half_diagonal_sq) + 2.0 * h, largest = 0.0;
+  MPI_Allreduce(&reach, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
+  constexpr double FARTHEST = 1e3;    // in h: float's 6e-8 relative rounding gives 1e-4 h
+  warned_far_from_origin = largest > FARTHEST * h;
+  if (warned_far_from_origin && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair style sph/granular precision mixed: particles lie up to {:.3g} h from "
+                   "the origin of their single-precision positions, where single precision "
+                   "rounds pair distances by more than 1e-4 h: run on more MPI ranks (smaller "
+                   "sub-domains) or in double precision",
+                   largest / h);
+}
+
 /* ----------------------------------------------------------------------
    pair_style sph/granular h keyword value ...
      visc alpha beta          Monaghan viscosity coefficients (eq. 7)
@@ -416,6 +484,7 @@ void PairSPHGranular::pack_particles(int from, int to)
      wall/stress paper|ratio  how eq. 8 adds the grains' weight to the dummies
      wall/friction group rough|slip|delta  the friction of the walls of a dummy group:
                               as the sand's (rough), none, or Coulomb's at angle delta
+     precision double|mixed   the grains' pair sums in double or single precision
 ------------------------------------------------------------------------- */
 
 void PairSPHGranular::settings(int narg, char **arg)
@@ -484,6 +553,8 @@ void PairSPHGranular::settings(int narg, char **arg)
     else if (key == "wall/stress")
       wall_stress_mode =
           choice(iarg, {"paper", "ratio"}) ? GRANSPH::WallSums::RATIO : GRANSPH::WallSums::PAPER;
+    else if (key == "precision")
+      mixed_precision = choice(iarg, {"double", "mixed"});
     else
       error->all(FLERR, "Pair style sph/granular: unknown keyword {}", key);
     iarg += 2;
@@ -572,10 +643,11 @@ void PairSPHGranular::read_restart(FILE *fp)
 void PairSPHGranular::write_restart_settings(FILE *fp)
 {
   const double values[3] = {h, visc.alpha, visc.beta};
-  const int choices[6] = {visc.sound, visc.walls, corrected_gradient, wall_stress_mode,
-                          wall_normal, (int) friction_walls.size()};
+  const int choices[7] = {visc.sound, visc.walls,       corrected_gradient,
+                          wall_stress_mode, wall_normal, (int) friction_walls.size(),
+                          mixed_precision};
   fwrite(values, sizeof(double), 3, fp);
-  fwrite(choices, sizeof(int), 6, fp);
+  fwrite(choices, sizeof(int), 7, fp);
   for (const FrictionWall &w : friction_walls) {
     fwrite(&w.group, sizeof(int), 1, fp);
     fwrite(&w.mu, sizeof(double), 1, fp);
@@ -585,13 +657,13 @@ void PairSPHGranular::write_restart_settings(FILE *fp)
 void PairSPHGranular::read_restart_settings(FILE *fp)
 {
   double values[3];
-  int choices[6];
+  int choices[7];
   if (comm->me == 0) {
     utils::sfread(FLERR, values, sizeof(double), 3, fp, nullptr, error);
-    utils::sfread(FLERR, choices, sizeof(int), 6, fp, nullptr, error);
+    utils::sfread(FLERR, choices, sizeof(int), 7, fp, nullptr, error);
   }
   MPI_Bcast(values, 3, MPI_DOUBLE, 0, world);
-  MPI_Bcast(choices, 6, MPI_INT, 0, world);
+  MPI_Bcast(choices, 7, MPI_INT, 0, world);
   friction_walls.resize(choices[5]);
   for (FrictionWall &w : friction_walls) {
     if (comm->me == 0) {
@@ -609,6 +681,7 @@ void PairSPHGranular::read_restart_settings(FILE *fp)
   corrected_gradient = choices[2];
   wall_stress_mode = static_cast<GRANSPH::WallSums::Mode>(choices[3]);
   wall_normal = choices[4];
+  mixed_precision = choices[6];
 }
 
 std::vector<double> PairSPHGranular::rate_settings() const
@@ -620,7 +693,8 @@ std::vector<double> PairSPHGranular::rate_settings() const
                                double(visc.walls),
                                double(corrected_gradient),
                                double(wall_stress_mode),
-                               double(wall_normal)};
+                               double(wall_normal),
+                               double(mixed_precision)};
   for (const FrictionWall &w : friction_walls) {
     settings.push_back(w.group);
     settings.push_back(w.mu);

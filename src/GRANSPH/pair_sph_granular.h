@@ -49,6 +49,8 @@ class PairSPHGranular : public Pair {
   int corrected_gradient;                     // renormalise the velocity gradient
   int wall_normal;                            // walls enter drho, grad_v along their normal
   GRANSPH::WallSums::Mode wall_stress_mode;   // eq. 8
+  int mixed_precision;                        // the grains' pair sums in single precision
+  bool warned_far_from_origin;                // of single-precision positions, once
   // walls with a friction of their own (wall/friction): the dummies of group `group`
   // (an index into LAMMPS' groups) limit the grains' tangential force at mu times the
   // normal one, mu = tan(delta) (0: slip); the last entry that holds a dummy counts
@@ -72,17 +74,20 @@ class PairSPHGranular : public Pair {
   // at the setup of a run that continues the last: the dummies take the last step's force
   bool repeats_last_wall_forces() const;
   void forward_comm_friction_slide();
+  void single_precision_origin(double *origin);
 
  private:
   int nmax;
   // what the pairs read, per atom, owned and ghost
   GRANSPH::PairParticle *particles;
+  GRANSPH::PairParticleSingle *particles_single;    // their copy under precision mixed
   double *normals;    // with wall/gradient normal or wall/friction: pack_wall_normals()
   double *friction;   // with wall/friction: pack_wall_friction()
   double *slide;      // with wall/friction: 4 per atom, a grain's share and slide direction
 
   void grow(int n);
   void pack_particles(int from, int to);
+  void pack_particles_single(int n);
   template <class Particles> void check_no_coincident(const Particles &p);
   template <class Particles> void walls(const Particles &p, bool with_forces);
   template <class Particles> void wall_forces(const Particles &p);

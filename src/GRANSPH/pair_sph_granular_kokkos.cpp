@@ -183,7 +183,11 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
     fix.forward_comm_state();
     pack_particles(kk, nlocal, nall);
   }
-  grains(p, kk);
+  if (mixed_precision) {
+    pack_particles_single(nall);
+    grains(p.in_single(d_particles_single), kk);
+  } else
+    grains(p, kk);
   kk.k_rates.template modify<DeviceType>();
   kk.k_state.template modify<DeviceType>();
   if (limited) {
@@ -378,10 +382,29 @@ void PairSPHGranularKokkos<DeviceType>::wall_forces(const DeviceParticles<Device
     for (int k = 0; k < 6; ++k) virial[k] += ev.v[k];
 }
 
+// the single-precision copy of atoms [0, n) for the grains' sums, with the dummies'
+// stress of this evaluation in place
+template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::pack_particles_single(int n)
+{
+  if ((int) d_particles_single.extent(0) < n)
+    d_particles_single = decltype(d_particles_single)(
+        Kokkos::view_alloc(Kokkos::WithoutInitializing, "pair:particles_single"), atom->nmax);
+  auto particles = d_particles;
+  auto single = d_particles_single;
+  double origin[3];
+  single_precision_origin(origin);
+  const double ox = origin[0], oy = origin[1], oz = origin[2];
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<DeviceType>(0, n), LAMMPS_LAMBDA(const int i) {
+        const double o[3] = {ox, oy, oz};
+        single(i) = GRANSPH::PairParticleSingle::of(particles(i), o);
+      });
+}
+
 // rates of the granular particles (eqs. 6, 7, 34, 35)
 template <class DeviceType>
-void PairSPHGranularKokkos<DeviceType>::grains(const DeviceParticles<DeviceType> &p,
-                                               SPHStateKokkos &kk)
+template <class Particles>
+void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p, SPHStateKokkos &kk)
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
   auto rates = kk.k_rates.template view<DeviceType>();
@@ -393,6 +416,7 @@ void PairSPHGranularKokkos<DeviceType>::grains(const DeviceParticles<DeviceType>
   const int corrected = corrected_gradient, dim = domain->dimension;
   const bool limited = p.wall_friction;
   auto slide = k_slide.template view<DeviceType>();
+  auto particles = d_particles;
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
       ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
@@ -407,7 +431,7 @@ void PairSPHGranularKokkos<DeviceType>::grains(const DeviceParticles<DeviceType>
           for (int k = 0; k < SLIDE; ++k) slide(SLIDE * i + k) = s[k];
         if (corrected) r.correct_gradient(dim);
         state(i, FSI::VISC_PRESSURE) = r.viscous_pressure();
-        const double m = p.particle(i).mass;
+        const double m = particles(i).mass;
         for (int a = 0; a < 3; ++a) f(i, a) += m * r.acc[a] / ftm2v;
         rates(i, FSI::DRHO) = r.drho;
         r.strain().store(&rates(i, FSI::STRAIN));

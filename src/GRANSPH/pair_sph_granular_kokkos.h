@@ -43,13 +43,17 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
 
   // device kernels (public: CUDA lambdas may not live in private members)
   void pack_particles(SPHStateKokkos &kk, int from, int to);
+  void pack_particles_single(int n);
   void walls(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk, bool with_forces);
   void wall_forces(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
-  void grains(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
+  // Particles: DeviceParticles<DeviceType> or, under precision mixed, over PairParticleSingle
+  template <class Particles> void grains(const Particles &p, SPHStateKokkos &kk);
 
  private:
   GRANSPHCompat::tdual_virial k_vatom;
   Kokkos::View<GRANSPH::PairParticle *, DeviceType> d_particles;    // owned and ghost atoms
+  Kokkos::View<GRANSPH::PairParticleSingle *, DeviceType> d_particles_single;    // their copy
+                                                                 // under precision mixed
   // with wall/gradient normal or wall/friction, 3 per atom (pack_wall_normals), and with
   // wall/friction the dummies' friction coefficients (pack_wall_friction), copied to the
   // device when atoms may have moved between ranks or in memory

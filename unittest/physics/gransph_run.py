@@ -51,17 +51,23 @@ def run(input_file, variables=None, ranks=1, args=(), cwd=None):
     return proc.stdout
 
 
-def first_error(directory, text, args=()):
-    """Run the input `text` from `directory`; return LAMMPS' exit code and its first
-    ERROR line ('' if none)."""
+def output_of(directory, text, args=()):
+    """Run the input `text` from `directory`; return LAMMPS' exit code and all it printed."""
     path = os.path.join(directory, "in.case")
     with open(path, "w") as f:
         f.write(text)
     # line-buffered: error->one ends in MPI_Abort, which does not flush a pipe
     cmd = ["stdbuf", "-oL", LMP, "-in", path, "-log", "none", "-echo", "none"] + list(args)
     proc = subprocess.run(cmd, cwd=directory, capture_output=True, text=True, timeout=120)
-    errors = [l for l in (proc.stdout + proc.stderr).splitlines() if "ERROR" in l]
-    return proc.returncode, errors[0] if errors else ""
+    return proc.returncode, proc.stdout + proc.stderr
+
+
+def first_error(directory, text, args=()):
+    """Run the input `text` from `directory`; return LAMMPS' exit code and its first
+    ERROR line ('' if none)."""
+    code, out = output_of(directory, text, args)
+    errors = [l for l in out.splitlines() if "ERROR" in l]
+    return code, errors[0] if errors else ""
 
 
 def read_dump(path):

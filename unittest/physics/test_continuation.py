@@ -2,7 +2,8 @@
 in one piece, in two runs, and in two processes through a restart file gives the
 same positions, velocities, density and stress to round-off (1e-12 of the largest
 value of each), for both integrator fixes (and with the extrapolated predictor, which
-keeps the rates of the last two steps), on 1 and 2 MPI ranks, with the CFL
+keeps the rates of the last two steps, and with the grains' sums in single precision),
+on 1 and 2 MPI ranks, with the CFL
 timestep and a wall whose velocity changes every step. What invalidates the rates
 of the last step is recomputed and said in the log. Arguments are passed to LAMMPS
 (e.g. -k on t 1 -sf kk)."""
@@ -40,18 +41,21 @@ def difference(a, b):
     return result
 
 
-# the integrator fixes, and one with the predictor that keeps the rates of two steps
-SETTINGS = [("elastoplastic", ""), ("phasechange", ""),
-            ("elastoplastic", "predictor extrapolated")]
+# the integrator fixes, one with the predictor that keeps the rates of two steps, and one
+# with the grains' sums in single precision
+SETTINGS = [("elastoplastic", "", ""), ("phasechange", "", ""),
+            ("elastoplastic", "predictor extrapolated", ""),
+            ("elastoplastic", "", "precision mixed")]
 
 with tempfile.TemporaryDirectory() as tmp:
-    for model, options in SETTINGS:
+    for model, options, pair_options in SETTINGS:
         for ranks in (1, 2):
-            name = ", ".join([model] + ([options] if options else [])
+            name = ", ".join([model] + [o for o in (options, pair_options) if o]
                              + [f"{ranks} rank{'s' if ranks > 1 else ''}"])
 
             def run_case(mode):
-                return run(tmp, ranks, model=model, fix_options=options, mode=mode)
+                return run(tmp, ranks, model=model, fix_options=options,
+                           pair_options=pair_options, mode=mode)
 
             out, straight = run_case(mode=0)
             check(f"{name}: something happens",

@@ -33,6 +33,8 @@ CASES = [
      "unknown value tangent of keyword wall/gradient"),
     ("wall/gradient without a value", dict(pair_style="sph/granular 0.012 wall/gradient"),
      "wall/gradient needs a value"),
+    ("unknown precision", dict(pair_style="sph/granular 0.012 precision single"),
+     "unknown value single of keyword precision"),
     ("pair_coeff with values", dict(pair_coeff="* * 1.0"), "expected I J only"),
     ("wall/friction of no group", dict(pair_style="sph/granular 0.012 wall/friction nosuch 20"),
      "wall/friction group nosuch does not exist"),
@@ -181,6 +183,18 @@ with tempfile.TemporaryDirectory() as tmp:
     for name, fields, expected in CASES:
         code, error = run_case(tmp, fields)
         check(name, code != 0 and re.search(expected, error), error or "no error")
+    # single-precision positions far from their origin: a warning that says how far
+    for name, box, warned in (("precision mixed in a small box", "", False),
+                              ("precision mixed in a box 30 m long",
+                               "\nchange_box all x final 0 30 units box", True)):
+        code, out = gransph_run.output_of(tmp, BASE.format(**{
+            **GOOD, "pair_style": "sph/granular 0.012 precision mixed",
+            "mass": GOOD["mass"] + box}))
+        warning = re.search(r"WARNING: Pair style sph/granular precision mixed: particles lie "
+                            r"up to (\S+) h from the origin", out)
+        check(name + (": warns" if warned else ": no warning"),
+              code == 0 and bool(warning) == warned and (not warned or 1000 < float(warning[1])),
+              warning[0] if warning else f"exit {code}, no warning")
     code, error = gransph_run.first_error(tmp, MOVE_2D)
     check("sph/move with vz in 2d", code != 0 and "vz must be 0" in error, error or "no error")
     code, error = run_case(tmp, BLOW_UP, KOKKOS)

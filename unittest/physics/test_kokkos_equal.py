@@ -2,7 +2,8 @@
 positions, velocities, density and stress after a few hundred steps of the
 column collapse (elastoplastic, dummy walls; also with the walls' velocity along
 their normal only, from the dummies' centre or their own normals, with a floor of
-a friction of its own, and with the predictor extrapolated), the jet collision
+a friction of its own, with the predictor extrapolated, and with the grains' sums in
+single precision, also on a floor with a friction of its own), the jet collision
 (phase change), and what compute sph/stress/atom makes of the column's stress."""
 
 import os
@@ -19,6 +20,9 @@ CASES = [
     ("column_collapse", {"steps": 300, "pair_options": "wall/gradient normal", "normals": 1}),
     ("column_collapse", {"steps": 300, "pair_options": "wall/friction floor 20", "normals": 1}),
     ("column_collapse", {"steps": 300, "fix_options": "predictor extrapolated"}),
+    ("column_collapse", {"steps": 300, "pair_options": "precision mixed"}),
+    ("column_collapse", {"steps": 300, "pair_options": "precision mixed wall/friction floor 20",
+                         "normals": 1}),
     ("jet_collision", {"steps": 300, "dx": 0.016}),
 ]
 KOKKOS = ["-k", "on", "t", "2", "-sf", "kk"]
