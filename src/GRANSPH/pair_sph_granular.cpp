@@ -639,15 +639,24 @@ void PairSPHGranular::read_restart(FILE *fp)
     }
 }
 
-// the settings as h, alpha, beta, then the choices as whole numbers
+// Files of the layout with the precision setting carry this mark before their choices,
+// where an older file has its first choice (0 or 1): so older files still read.
+constexpr int RESTART_WITH_PRECISION = -20261204;
+
+// the settings as h, alpha, beta, then the mark and the choices as whole numbers
 void PairSPHGranular::write_restart_settings(FILE *fp)
 {
   const double values[3] = {h, visc.alpha, visc.beta};
-  const int choices[7] = {visc.sound, visc.walls,       corrected_gradient,
-                          wall_stress_mode, wall_normal, (int) friction_walls.size(),
+  const int choices[8] = {RESTART_WITH_PRECISION,
+                          visc.sound,
+                          visc.walls,
+                          corrected_gradient,
+                          wall_stress_mode,
+                          wall_normal,
+                          (int) friction_walls.size(),
                           mixed_precision};
   fwrite(values, sizeof(double), 3, fp);
-  fwrite(choices, sizeof(int), 7, fp);
+  fwrite(choices, sizeof(int), 8, fp);
   for (const FrictionWall &w : friction_walls) {
     fwrite(&w.group, sizeof(int), 1, fp);
     fwrite(&w.mu, sizeof(double), 1, fp);
@@ -657,10 +666,15 @@ void PairSPHGranular::write_restart_settings(FILE *fp)
 void PairSPHGranular::read_restart_settings(FILE *fp)
 {
   double values[3];
-  int choices[7];
+  int choices[7] = {0, 0, 0, 0, 0, 0, 0};    // a file without the mark: double precision
   if (comm->me == 0) {
     utils::sfread(FLERR, values, sizeof(double), 3, fp, nullptr, error);
-    utils::sfread(FLERR, choices, sizeof(int), 7, fp, nullptr, error);
+    int first = 0;
+    utils::sfread(FLERR, &first, sizeof(int), 1, fp, nullptr, error);
+    const bool marked = first == RESTART_WITH_PRECISION;
+    if (!marked) choices[0] = first;
+    utils::sfread(FLERR, marked ? choices : choices + 1, sizeof(int), marked ? 7 : 5, fp, nullptr,
+                  error);
   }
   MPI_Bcast(values, 3, MPI_DOUBLE, 0, world);
   MPI_Bcast(choices, 7, MPI_INT, 0, world);
@@ -693,12 +707,13 @@ std::vector<double> PairSPHGranular::rate_settings() const
                                double(visc.walls),
                                double(corrected_gradient),
                                double(wall_stress_mode),
-                               double(wall_normal),
-                               double(mixed_precision)};
+                               double(wall_normal)};
   for (const FrictionWall &w : friction_walls) {
     settings.push_back(w.group);
     settings.push_back(w.mu);
   }
+  // last, and only if set: the rates of files from before the option still continue
+  if (mixed_precision) settings.push_back(-1.0);
   return settings;
 }
 
