@@ -156,6 +156,7 @@ void PairSPHGranular::compute(int eflag, int vflag)
     pack_particles(atom->nlocal, nall);
   }
   if (mixed_precision) {
+    if (update->setupflag) warn_if_far_from_single_origin();
     pack_particles_single(nall);
     grains(p.in_single(particles_single));
   } else
@@ -446,11 +447,9 @@ void PairSPHGranular::pack_particles_single(int n)
 }
 
 // Under precision mixed: the centre of this rank's sub-domain (of the box if it is
-// triclinic), from which the single-precision positions are taken. At a run's setup,
-// once, a warning if a particle can lie so far from it (half the sub-domain's diagonal
-// and the cut-off) that single precision rounds its pair distances by more than a ten-
-// thousandth of h.
-void PairSPHGranular::single_precision_origin(double *origin)
+// triclinic), from which the single-precision positions are taken; and how far from it
+// a particle of the lists can lie (half the sub-domain's diagonal and the cut-off).
+double PairSPHGranular::single_precision_origin(double *origin) const
 {
   const bool sub = !domain->triclinic;
   const double *lo = sub ? domain->sublo : domain->boxlo, *hi = sub ? domain->subhi : domain->boxhi;
@@ -459,8 +458,17 @@ void PairSPHGranular::single_precision_origin(double *origin)
     origin[a] = 0.5 * (lo[a] + hi[a]);
     half_diagonal_sq += 0.25 * (hi[a] - lo[a]) * (hi[a] - lo[a]);
   }
-  if (!update->setupflag || warned_far_from_origin) return;
-  double reach = sqrt(half_diagonal_sq) + 2.0 * h, largest = 0.0;
+  return sqrt(half_diagonal_sq) + 2.0 * h;
+}
+
+// Collective, at a run's setup under precision mixed: once, a warning if a particle can
+// lie so far from its single-precision origin that single precision rounds its pair
+// distances by more than a ten-thousandth of h.
+void PairSPHGranular::warn_if_far_from_single_origin()
+{
+  if (warned_far_from_origin) return;
+  double origin[3], largest = 0.0;
+  double reach = single_precision_origin(origin);
   MPI_Allreduce(&reach, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
   constexpr double FARTHEST = 1e3;    // in h: float's 6e-8 relative rounding gives 1e-4 h
   warned_far_from_origin = largest > FARTHEST * h;

@@ -74,7 +74,8 @@ class PairSPHGranular : public Pair {
   // at the setup of a run that continues the last: the dummies take the last step's force
   bool repeats_last_wall_forces() const;
   void forward_comm_friction_slide();
-  void single_precision_origin(double *origin);
+  double single_precision_origin(double *origin) const;
+  void warn_if_far_from_single_origin();
 
  private:
   int nmax;

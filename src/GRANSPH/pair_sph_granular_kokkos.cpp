@@ -184,6 +184,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
     pack_particles(kk, nlocal, nall);
   }
   if (mixed_precision) {
+    if (update->setupflag) warn_if_far_from_single_origin();
     pack_particles_single(nall);
     grains(p.in_single(d_particles_single), kk);
   } else
