@@ -12,7 +12,7 @@
 #include "gransph_integrator.h"
 #include "update.h"
 
-#include <cstring>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -41,59 +41,99 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
   enum Stage { PREDICT, CORRECT };
 
  private:
+  // the owned atoms of the group and their masses, for the step's loop
+  std::vector<int> grains;
+  std::vector<double> grain_mass;
+
   void step(Stage stage)
   {
-    double **x = atom->x, **v = atom->v, **f = atom->f;
-    const double *rmass = atom->rmass, *mass = atom->mass;
-    const int *type = atom->type, *mask = atom->mask;
-    const double dt = update->dt;
-    for (int i = 0; i < atom->nlocal; ++i) {
-      if (!(mask[i] & groupbit)) continue;
-      const double ftm = force->ftm2v / (rmass ? rmass[i] : mass[type[i]]);
-      GRANSPH::ParticleState p{{x[i][0], x[i][1], x[i][2]}, {v[i][0], v[i][1], v[i][2]},
-                               state[i][RHO], GRANSPH::Sym3::load(&state[i][SIGMA])};
-      GRANSPH::StepStart s{{start[i][V_START], start[i][V_START + 1], start[i][V_START + 2]},
-                           start[i][RHO_START], GRANSPH::Sym3::load(&start[i][SIGMA_START])};
+    grains.clear();
+    grain_mass.clear();
+    for (int i = 0; i < atom->nlocal; ++i)
+      if (atom->mask[i] & groupbit) {
+        grains.push_back(i);
+        grain_mass.push_back(atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]]);
+      }
+    if (grains.empty()) return;
+    // a grain without a step predicts with the acceleration of the setup evaluation
+    if (stage == PREDICT)
+      for (size_t k = 0; k < grains.size(); ++k) {
+        const int i = grains[k];
+        if (start[i][STEPPED] != 0.0) continue;
+        const double ftm = force->ftm2v / grain_mass[k];
+        for (int a = 0; a < 3; ++a) rates[i][ACC + a] = ftm * atom->f[i][a];
+      }
+    // the model's variant for this run, so that the loop has no branch on it
+    with_run_variant(model, [&](const auto &m) {    // found by ADL: the model's own
+      if (stage == PREDICT)
+        predictor_extrapolated ? advance<PREDICT, true>(m) : advance<PREDICT, false>(m);
+      else
+        predictor_extrapolated ? advance<CORRECT, true>(m) : advance<CORRECT, false>(m);
+    });
+  }
+
+  // Every grain's predictor or corrector step, in a loop that the compiler vectorises:
+  // each per-atom array read and written at a fixed stride from its first row, the
+  // choices of a lane as selections.
+  template <Stage STAGE, bool EXTRAPOLATE, class M> void advance(const M &m)
+  {
+    using GRANSPH::Sym3;
+    double *x = atom->x[0], *v = atom->v[0];
+    const double *f = atom->f[0], *mass = grain_mass.data();
+    const int *index = grains.data();
+    double *st = state[0], *ra = rates[0], *sa = start[0];
+    const int n = grains.size(), nr = nrates;
+    const double dt = update->dt, ftm2v = force->ftm2v;
+#if !defined(__CUDACC__) && !defined(__HIPCC__)
+#pragma omp simd
+#endif
+    for (int k = 0; k < n; ++k) {
+      // grain i's values in each array, at a multiple of its row: what a gather can take
+      const int i = index[k], ix = 3 * i, ist = NSTATE * i, ir = nr * i, is = NSTART * i;
+      const double ftm = ftm2v / mass[k];
+      GRANSPH::ParticleState p{{x[ix], x[ix + 1], x[ix + 2]}, {v[ix], v[ix + 1], v[ix + 2]},
+                               st[ist + RHO], Sym3::load(st, ist + SIGMA)};
+      GRANSPH::StepStart s{{sa[is + V_START], sa[is + V_START + 1], sa[is + V_START + 2]},
+                           sa[is + RHO_START], Sym3::load(sa, is + SIGMA_START)};
       // the predictor takes the acceleration of the last step's mid-point, which the
-      // corrector kept; without a step, that of the setup evaluation
-      const bool stored = stage == PREDICT && start[i][STEPPED] != 0.0;
-      GRANSPH::StepRates r = rates_at(i, 0);
-      if (!stored)
-        for (int a = 0; a < 3; ++a) r.acc[a] = ftm * f[i][a];
+      // corrector kept (or step() put there), the corrector that of this evaluation
+      GRANSPH::StepRates r = rates_of(ra, ir);
+      if (STAGE == CORRECT)
+        for (int a = 0; a < 3; ++a) r.acc[a] = ftm * f[ix + a];
       GRANSPH::Regime regime;
-      if (stage == PREDICT) {
-        if (predictor_extrapolated) {    // from the last two mid-points, which PREV then holds
-          if (start[i][STEPPED] >= 2.0)
-            r = GRANSPH::extrapolated(r, rates_at(i, PREV), rates[i][RATES_DT],
-                                      rates[i][PREV + RATES_DT]);
-          memcpy(&rates[i][PREV], rates[i], PREV * sizeof(double));
+      if (STAGE == PREDICT) {
+        if (EXTRAPOLATE) {    // from the last two mid-points, which PREV then holds
+          const GRANSPH::StepRates e = GRANSPH::extrapolated(
+              r, rates_of(ra, ir + PREV), ra[ir + RATES_DT], ra[ir + PREV + RATES_DT]);
+          r = GRANSPH::select(sa[is + STEPPED] >= 2.0, e, r);
+          for (int c = 0; c < PREV; ++c) ra[ir + PREV + c] = ra[ir + c];
         }
-        GRANSPH::predict(model, p, s, r, dt, regime);
-        for (int a = 0; a < 3; ++a) start[i][V_START + a] = s.v[a];
-        start[i][RHO_START] = s.rho;
-        s.sigma.store(&start[i][SIGMA_START]);
+        GRANSPH::predict(m, p, s, r, dt, regime);
+        for (int a = 0; a < 3; ++a) sa[is + V_START + a] = s.v[a];
+        sa[is + RHO_START] = s.rho;
+        s.sigma.store(sa, is + SIGMA_START);
       } else {
-        GRANSPH::correct(model, p, s, r, dt, regime);
-        for (int a = 0; a < 3; ++a) rates[i][ACC + a] = r.acc[a];
-        if (predictor_extrapolated) rates[i][RATES_DT] = dt;
-        start[i][STEPPED] = fmin(start[i][STEPPED] + 1.0, 2.0);
+        GRANSPH::correct(m, p, s, r, dt, regime);
+        for (int a = 0; a < 3; ++a) ra[ir + ACC + a] = r.acc[a];
+        if (EXTRAPOLATE) ra[ir + RATES_DT] = dt;
+        const double stepped = sa[is + STEPPED] + 1.0;
+        sa[is + STEPPED] = stepped < 2.0 ? stepped : 2.0;
       }
       for (int a = 0; a < 3; ++a) {
-        x[i][a] = p.x[a];
-        v[i][a] = p.v[a];
+        x[ix + a] = p.x[a];
+        v[ix + a] = p.v[a];
       }
-      state[i][RHO] = p.rho;
-      p.sigma.store(&state[i][SIGMA]);
-      state[i][REGIME] = regime;
+      st[ist + RHO] = p.rho;
+      p.sigma.store(st, ist + SIGMA);
+      st[ist + REGIME] = regime;
     }
   }
 
-  // the rates in the columns from `at` of atom i's row (0: the last evaluation's)
-  GRANSPH::StepRates rates_at(int i, int at) const
+  // the rates in the columns from `at` of the array of all rows
+  static GRANSPH::StepRates rates_of(const double *r, int at)
   {
-    const double *r = &rates[i][at];
-    return {{r[ACC], r[ACC + 1], r[ACC + 2]}, r[DRHO], GRANSPH::Sym3::load(&r[STRAIN]),
-            GRANSPH::Spin3::load(&r[SPIN])};
+    return {{r[at + ACC], r[at + ACC + 1], r[at + ACC + 2]}, r[at + DRHO],
+            GRANSPH::Sym3::load(r, at + STRAIN), GRANSPH::Spin3::load(r, at + SPIN)};
   }
 };
 

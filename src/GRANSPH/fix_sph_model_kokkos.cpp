@@ -8,9 +8,9 @@
 #include "atom_masks.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_sph_elastoplastic.h"
+#include "fix_sph_phasechange.h"
 #include "force.h"
-#include "gransph_drucker_prager.h"
-#include "gransph_phase_change.h"
 #include "memory_kokkos.h"
 #include "output.h"
 #include "pair.h"
@@ -34,7 +34,7 @@ template <class DeviceType, class Model, bool PREDICT> struct StepFunctor {
   int groupbit, use_rmass, extrapolate;
   double dt, ftm2v;
 
-  // the rates in the columns from `at` of atom i's row (as FixSPHModel::rates_at)
+  // the rates in the columns from `at` of atom i's row (as FixSPHModel::rates_of)
   KOKKOS_INLINE_FUNCTION GRANSPH::StepRates rates_at(int i, int at) const
   {
     constexpr int D = FSI::STRAIN, W = FSI::SPIN, A = FSI::ACC;

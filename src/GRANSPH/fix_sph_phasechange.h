@@ -18,6 +18,9 @@ FixStyle(sph/phasechange,FixSPHPhaseChange);
 namespace LAMMPS_NS {
 
 using FixSPHPhaseChange = FixSPHModel<GRANSPH::PhaseChange>;
+// instantiated once, in fix_sph_model.cpp: a small unit, in which the compiler inlines the
+// model into the step's loop and vectorises it
+extern template class FixSPHModel<GRANSPH::PhaseChange>;
 
 }    // namespace LAMMPS_NS
 

@@ -73,27 +73,22 @@ struct DruckerPrager {
 
   // Bui's treatment of states outside the admissible region: tension beyond the
   // apex of the cone is cut back to the apex (tension cracking), then a deviator
-  // outside the cone is scaled back onto it. Raises regime accordingly.
+  // outside the cone is scaled back onto it. Raises regime accordingly. Written without
+  // branches (each case a selection, every division by a guarded divisor), so that the
+  // host's loop over the grains vectorises (FixSPHModel::step).
   KOKKOS_INLINE_FUNCTION Sym3 return_to_cone(Sym3 s, Regime &regime) const
   {
-    if (alpha_phi > 0.0) {
-      const double excess = s.trace() - k_c / alpha_phi;
-      if (excess > 0.0) {
-        s = s - Sym3::iso(excess / 3.0);
-        regime = DISCONNECTED;
-      }
-    }
+    const double excess = s.trace() - k_c / (alpha_phi > 0.0 ? alpha_phi : 1.0);
+    const bool cut = (alpha_phi > 0.0) & (excess > 0.0);
+    s = select(cut, s - Sym3::iso(excess / 3.0), s);
     const double strength = k_c - alpha_phi * s.trace();
-    if (strength <= 0.0) {
-      regime = DISCONNECTED;
-      return Sym3::iso(s.trace() / 3.0);
-    }
+    const bool apex = strength <= 0.0;
     const double sqrt_j2 = sqrt(second_invariant(s));
-    if (sqrt_j2 > strength) {
-      if (regime == ELASTIC) regime = PLASTIC;
-      return Sym3::iso(s.trace() / 3.0) + (strength / sqrt_j2) * s.deviator();
-    }
-    return s;
+    const bool outside = !apex & (sqrt_j2 > strength);
+    const Sym3 mean = Sym3::iso(s.trace() / 3.0);
+    const double scale = strength / (outside ? sqrt_j2 : 1.0);
+    regime = (cut | apex) ? DISCONNECTED : (outside & (regime == ELASTIC)) ? PLASTIC : regime;
+    return select(apex, mean, select(outside, mean + scale * s.deviator(), s));
   }
 
   // Plastic part of the stress rate of eq. 32, lambda (9 K sin(psi) I + G S / sqrt(J2)),
@@ -123,31 +118,63 @@ struct DruckerPrager {
   // does.
   KOKKOS_INLINE_FUNCTION Sym3 return_mapping(const Sym3 &trial, Regime &regime) const
   {
-    regime = ELASTIC;
     const double f = yield_function(trial);
     const double sqrt_j2 = sqrt(second_invariant(trial));
-    if (f <= 0.0 || sqrt_j2 == 0.0) return return_to_cone(trial, regime);
+    const bool plastic = !((f <= 0.0) | (sqrt_j2 == 0.0));
     const double dlambda = f / (G + 27.0 * alpha_phi * K * sin_psi);
-    const double scale = 1.0 - dlambda * G / sqrt_j2;
+    const double scale = 1.0 - dlambda * G / (plastic ? sqrt_j2 : 1.0);
     const Sym3 pressure = Sym3::iso(trial.trace() / 3.0 - 9.0 * K * sin_psi * dlambda);
-    regime = PLASTIC;
-    return return_to_cone(pressure + fmax(scale, 0.0) * trial.deviator(), regime);
+    regime = plastic ? PLASTIC : ELASTIC;
+    return return_to_cone(
+        select(plastic, pressure + (scale > 0.0 ? scale : 0.0) * trial.deviator(), trial),
+        regime);
   }
 
   // A step of length dt from s0 with the rate evaluated at s (see jaumann_trial), back
   // into the admissible region as explicit_rate says; the stress-model interface of
   // gransph_stress_model.h. This model ignores the density.
   KOKKOS_INLINE_FUNCTION Sym3 update(const Sym3 &s0, const Sym3 &s, const Sym3 &d,
-                                     const Spin3 &w, double /*rho*/, double dt,
+                                     const Spin3 &w, double rho, double dt,
                                      Regime &regime) const
   {
+    return explicit_rate ? update_with<true>(s0, s, d, w, rho, dt, regime)
+                         : update_with<false>(s0, s, d, w, rho, dt, regime);
+  }
+
+  // update with the plastic treatment EXPLICIT (explicit_rate) fixed at compile time
+  template <bool EXPLICIT>
+  KOKKOS_INLINE_FUNCTION Sym3 update_with(const Sym3 &s0, const Sym3 &s, const Sym3 &d,
+                                          const Spin3 &w, double /*rho*/, double dt,
+                                          Regime &regime) const
+  {
     const Sym3 trial = jaumann_trial(s0, s, d, w, K, G, dt);
-    if (!explicit_rate) return return_mapping(trial, regime);
+    if (!EXPLICIT) return return_mapping(trial, regime);
     const Sym3 plastic = plastic_rate(s, d, dt);
     regime = plastic.ddot(plastic) > 0.0 ? PLASTIC : ELASTIC;
     return return_to_cone(trial - dt * plastic, regime);
   }
 };
+
+// DruckerPrager with its plastic treatment fixed for a run: a loop over the particles
+// that calls its update has no branch on it (with_run_variant)
+template <bool EXPLICIT> struct DruckerPragerWith {
+  DruckerPrager model;
+
+  KOKKOS_INLINE_FUNCTION Sym3 update(const Sym3 &s0, const Sym3 &s, const Sym3 &d,
+                                     const Spin3 &w, double rho, double dt,
+                                     Regime &regime) const
+  {
+    return model.update_with<EXPLICIT>(s0, s, d, w, rho, dt, regime);
+  }
+};
+
+template <class F> void with_run_variant(const DruckerPrager &model, F &&f)
+{
+  if (model.explicit_rate)
+    f(DruckerPragerWith<true>{model});
+  else
+    f(DruckerPragerWith<false>{model});
+}
 
 }    // namespace GRANSPH
 

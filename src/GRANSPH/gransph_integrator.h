@@ -49,6 +49,15 @@ struct StepRates {
   Spin3 w;
 };
 
+// a if c, else b, by component (a lane's choice in a vectorised loop)
+KOKKOS_INLINE_FUNCTION StepRates select(bool c, const StepRates &a, const StepRates &b)
+{
+  return {{c ? a.acc[0] : b.acc[0], c ? a.acc[1] : b.acc[1], c ? a.acc[2] : b.acc[2]},
+          c ? a.drho : b.drho,
+          select(c, a.d, b.d),
+          {c ? a.w.xy : b.w.xy, c ? a.w.xz : b.w.xz, c ? a.w.yz : b.w.yz}};
+}
+
 // The predictor's rates extrapolated to the step's start (fix keyword predictor
 // extrapolated): linearly from those of the last two mid-points, which lie dt_last / 2
 // and dt_last / 2 + dt_before / 2 before it (Adams-Bashforth; 1.5 r_{n-1/2} - 0.5
@@ -80,7 +89,7 @@ KOKKOS_INLINE_FUNCTION void predict(const Model &model, ParticleState &p, StepSt
     p.v[a] += half * r.acc[a];
   }
   start.rho = p.rho;
-  start.sigma = p.sigma;
+  start.sigma = {p.sigma.xx, p.sigma.yy, p.sigma.zz, p.sigma.xy, p.sigma.xz, p.sigma.yz};
   p.rho += half * r.drho;
   p.sigma = model.update(p.sigma, p.sigma, r.d, r.w, p.rho, half, regime);
 }

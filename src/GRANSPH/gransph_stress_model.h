@@ -15,6 +15,10 @@
 
    the share of the model's strength that the stress s uses, 1 at yield (compute
    sph/stress/atom).
+
+   A host loop over the particles calls f(variant) through with_run_variant(model, f),
+   where variant is the model itself, or a type that fixes a choice the model makes per
+   run (DruckerPrager's plastic treatment), so that the loop has no branch on it.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_STRESS_MODEL_H
@@ -31,6 +35,11 @@ enum Regime {
   DISCONNECTED = 2    // stress-free: below rho_c or in tension (phase change), or
                       // cut off at the apex of the Drucker-Prager cone
 };
+
+template <class Model, class F> void with_run_variant(const Model &model, F &&f)
+{
+  f(model);
+}
 
 }    // namespace GRANSPH
 

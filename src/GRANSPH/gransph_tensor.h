@@ -37,6 +37,23 @@ struct Sym3 {
     s[YZ] = yz;
   }
 
+  // the same from index `at` of an array: a loop vectorised across particles then
+  // gathers and scatters from one base (a per-particle pointer it cannot)
+  KOKKOS_INLINE_FUNCTION static Sym3 load(const double *a, int at)
+  {
+    return {a[at + XX], a[at + YY], a[at + ZZ], a[at + XY], a[at + XZ], a[at + YZ]};
+  }
+
+  KOKKOS_INLINE_FUNCTION void store(double *a, int at) const
+  {
+    a[at + XX] = xx;
+    a[at + YY] = yy;
+    a[at + ZZ] = zz;
+    a[at + XY] = xy;
+    a[at + XZ] = xz;
+    a[at + YZ] = yz;
+  }
+
   KOKKOS_INLINE_FUNCTION double trace() const { return xx + yy + zz; }
 
   KOKKOS_INLINE_FUNCTION Sym3 deviator() const
@@ -67,6 +84,14 @@ KOKKOS_INLINE_FUNCTION Sym3 operator*(double s, const Sym3 &a)
   return {s * a.xx, s * a.yy, s * a.zz, s * a.xy, s * a.xz, s * a.yz};
 }
 
+// a if c, else b, by component: a choice that code vectorised across particles makes
+// without a branch
+KOKKOS_INLINE_FUNCTION Sym3 select(bool c, const Sym3 &a, const Sym3 &b)
+{
+  return {c ? a.xx : b.xx, c ? a.yy : b.yy, c ? a.zz : b.zz,
+          c ? a.xy : b.xy, c ? a.xz : b.xz, c ? a.yz : b.yz};
+}
+
 // Second invariant of the deviator, J2 = S:S / 2.
 KOKKOS_INLINE_FUNCTION double second_invariant(const Sym3 &s)
 {
@@ -83,6 +108,12 @@ struct Spin3 {
   KOKKOS_INLINE_FUNCTION static Spin3 zero() { return {0.0, 0.0, 0.0}; }
 
   KOKKOS_INLINE_FUNCTION static Spin3 load(const double *w) { return {w[WXY], w[WXZ], w[WYZ]}; }
+
+  // from index `at` of an array (as Sym3::load)
+  KOKKOS_INLINE_FUNCTION static Spin3 load(const double *a, int at)
+  {
+    return {a[at + WXY], a[at + WXZ], a[at + WYZ]};
+  }
 
   KOKKOS_INLINE_FUNCTION void store(double *w) const
   {
