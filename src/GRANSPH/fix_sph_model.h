@@ -16,6 +16,11 @@
 
 namespace LAMMPS_NS {
 
+// Whether the host's step loop runs vectorised with model (variant) M: it pays where the
+// model's update costs more than a lane's gathers and scatters of the grain's values
+// (bench/README.md, fifth round)
+template <class M> constexpr bool vectorised_step = true;
+
 template <class Model> class FixSPHModel : public FixSPHIntegrate {
  public:
   FixSPHModel(class LAMMPS *lmp, int narg, char **arg) :
@@ -72,9 +77,9 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
     });
   }
 
-  // Every grain's predictor or corrector step, in a loop that the compiler vectorises:
-  // each per-atom array read and written at a fixed stride from its first row, the
-  // choices of a lane as selections.
+  // Every grain's predictor or corrector step, in a loop that the compiler can vectorise
+  // (vectorised_step): each per-atom array read and written at a fixed stride from its
+  // first row, the choices of a lane as selections.
   template <Stage STAGE, bool EXTRAPOLATE, class M> void advance(const M &m)
   {
     using GRANSPH::Sym3;
@@ -85,7 +90,7 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
     const int n = grains.size(), nr = nrates;
     const double dt = update->dt, ftm2v = force->ftm2v;
 #if !defined(__CUDACC__) && !defined(__HIPCC__)
-#pragma omp simd
+#pragma omp simd if(simd : vectorised_step<M>)
 #endif
     for (int k = 0; k < n; ++k) {
       // grain i's values in each array, at a multiple of its row: what a gather can take
