@@ -12,6 +12,7 @@
 #include "gransph_integrator.h"
 #include "update.h"
 
+#include <type_traits>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -19,7 +20,9 @@ namespace LAMMPS_NS {
 // Whether the host's step loop runs vectorised with model (variant) M: it pays where the
 // model's update costs more than a lane's gathers and scatters of the grain's values
 // (bench/README.md, fifth round)
-template <class M> constexpr bool vectorised_step = true;
+template <class M> struct VectorisedStep {
+  static constexpr bool value = true;
+};
 
 template <class Model> class FixSPHModel : public FixSPHIntegrate {
  public:
@@ -45,12 +48,23 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
  protected:
   enum Stage { PREDICT, CORRECT };
 
- private:
-  // the owned atoms of the group and their masses, for the step's loop
-  std::vector<int> grains;
-  std::vector<double> grain_mass;
+  // What the grains' step reads and writes: each per-atom array as its rows from the
+  // first (LAMMPS' x, v, f; state, rates, start), and the grains' indices and masses.
+  struct GrainArrays {
+    double *x, *v;
+    const double *f;
+    double *state, *rates, *start;
+    int nrates, n;
+    const int *index;
+    const double *mass;
+    double dt, ftm2v;
+  };
 
-  void step(Stage stage)
+  // Every grain's predictor or corrector step, with x, v, f where this rank's atoms have
+  // them: chunks(advance) runs advance(begin, end) over [0, advance.a.n) of the grains,
+  // at once (the plain fix) or in parallel chunks (its Kokkos twin on the host).
+  template <class Chunks> void step_grains(Stage stage, double **x, double **v, double **f,
+                                           Chunks chunks)
   {
     grains.clear();
     grain_mass.clear();
@@ -66,73 +80,94 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
         const int i = grains[k];
         if (start[i][STEPPED] != 0.0) continue;
         const double ftm = force->ftm2v / grain_mass[k];
-        for (int a = 0; a < 3; ++a) rates[i][ACC + a] = ftm * atom->f[i][a];
+        for (int a = 0; a < 3; ++a) rates[i][ACC + a] = ftm * f[i][a];
       }
+    const GrainArrays a{x[0],    v[0],          f[0], state[0],          rates[0],
+                        start[0], nrates,       (int) grains.size(), grains.data(),
+                        grain_mass.data(), update->dt, force->ftm2v};
     // the model's variant for this run, so that the loop has no branch on it
     with_run_variant(model, [&](const auto &m) {    // found by ADL: the model's own
+      using M = typename std::decay<decltype(m)>::type;
       if (stage == PREDICT)
-        predictor_extrapolated ? advance<PREDICT, true>(m) : advance<PREDICT, false>(m);
+        predictor_extrapolated ? chunks(Advance<PREDICT, true, M>{m, a})
+                               : chunks(Advance<PREDICT, false, M>{m, a});
       else
-        predictor_extrapolated ? advance<CORRECT, true>(m) : advance<CORRECT, false>(m);
+        predictor_extrapolated ? chunks(Advance<CORRECT, true, M>{m, a})
+                               : chunks(Advance<CORRECT, false, M>{m, a});
     });
   }
 
-  // Every grain's predictor or corrector step, in a loop that the compiler can vectorise
-  // (vectorised_step): each per-atom array read and written at a fixed stride from its
-  // first row, the choices of a lane as selections.
-  template <Stage STAGE, bool EXTRAPOLATE, class M> void advance(const M &m)
+ private:
+  // the owned atoms of the group and their masses, for the step's loop
+  std::vector<int> grains;
+  std::vector<double> grain_mass;
+
+  void step(Stage stage)
   {
-    using GRANSPH::Sym3;
-    double *x = atom->x[0], *v = atom->v[0];
-    const double *f = atom->f[0], *mass = grain_mass.data();
-    const int *index = grains.data();
-    double *st = state[0], *ra = rates[0], *sa = start[0];
-    const int n = grains.size(), nr = nrates;
-    const double dt = update->dt, ftm2v = force->ftm2v;
-#if !defined(__CUDACC__) && !defined(__HIPCC__)
-#pragma omp simd if(simd : vectorised_step<M>)
-#endif
-    for (int k = 0; k < n; ++k) {
-      // grain i's values in each array, at a multiple of its row: what a gather can take
-      const int i = index[k], ix = 3 * i, ist = NSTATE * i, ir = nr * i, is = NSTART * i;
-      const double ftm = ftm2v / mass[k];
-      GRANSPH::ParticleState p{{x[ix], x[ix + 1], x[ix + 2]}, {v[ix], v[ix + 1], v[ix + 2]},
-                               st[ist + RHO], Sym3::load(st, ist + SIGMA)};
-      GRANSPH::StepStart s{{sa[is + V_START], sa[is + V_START + 1], sa[is + V_START + 2]},
-                           sa[is + RHO_START], Sym3::load(sa, is + SIGMA_START)};
-      // the predictor takes the acceleration of the last step's mid-point, which the
-      // corrector kept (or step() put there), the corrector that of this evaluation
-      GRANSPH::StepRates r = rates_of(ra, ir);
-      if (STAGE == CORRECT)
-        for (int a = 0; a < 3; ++a) r.acc[a] = ftm * f[ix + a];
-      GRANSPH::Regime regime;
-      if (STAGE == PREDICT) {
-        if (EXTRAPOLATE) {    // from the last two mid-points, which PREV then holds
-          const GRANSPH::StepRates e = GRANSPH::extrapolated(
-              r, rates_of(ra, ir + PREV), ra[ir + RATES_DT], ra[ir + PREV + RATES_DT]);
-          r = GRANSPH::select(sa[is + STEPPED] >= 2.0, e, r);
-          for (int c = 0; c < PREV; ++c) ra[ir + PREV + c] = ra[ir + c];
-        }
-        GRANSPH::predict(m, p, s, r, dt, regime);
-        for (int a = 0; a < 3; ++a) sa[is + V_START + a] = s.v[a];
-        sa[is + RHO_START] = s.rho;
-        s.sigma.store(sa, is + SIGMA_START);
-      } else {
-        GRANSPH::correct(m, p, s, r, dt, regime);
-        for (int a = 0; a < 3; ++a) ra[ir + ACC + a] = r.acc[a];
-        if (EXTRAPOLATE) ra[ir + RATES_DT] = dt;
-        const double stepped = sa[is + STEPPED] + 1.0;
-        sa[is + STEPPED] = stepped < 2.0 ? stepped : 2.0;
-      }
-      for (int a = 0; a < 3; ++a) {
-        x[ix + a] = p.x[a];
-        v[ix + a] = p.v[a];
-      }
-      st[ist + RHO] = p.rho;
-      p.sigma.store(st, ist + SIGMA);
-      st[ist + REGIME] = regime;
-    }
+    step_grains(stage, atom->x, atom->v, atom->f,
+                [](const auto &advance) { advance(0, advance.a.n); });
   }
+
+  // The step of the grains [begin, end), in a loop that the compiler can vectorise
+  // (VectorisedStep): each per-atom array read and written at a fixed stride from its
+  // first row, the choices of a lane as selections.
+  template <Stage STAGE, bool EXTRAPOLATE, class M> struct Advance {
+    M m;
+    GrainArrays a;
+
+    void operator()(int begin, int end) const
+    {
+      using GRANSPH::Sym3;
+      double *x = a.x, *v = a.v, *st = a.state, *ra = a.rates, *sa = a.start;
+      const double *f = a.f, *mass = a.mass;
+      const int *index = a.index, nr = a.nrates;
+      const double dt = a.dt, ftm2v = a.ftm2v;
+#if !defined(__CUDACC__) && !defined(__HIPCC__)
+#pragma omp simd if(simd : VectorisedStep<M>::value)
+#endif
+      for (int k = begin; k < end; ++k) {
+        // grain i's values in each array, at a multiple of its row: what a gather can take
+        const int i = index[k], ix = 3 * i, ist = NSTATE * i, ir = nr * i, is = NSTART * i;
+        const double ftm = ftm2v / mass[k];
+        GRANSPH::ParticleState p{{x[ix], x[ix + 1], x[ix + 2]}, {v[ix], v[ix + 1], v[ix + 2]},
+                                 st[ist + RHO], Sym3::load(st, ist + SIGMA)};
+        GRANSPH::StepStart s{{sa[is + V_START], sa[is + V_START + 1], sa[is + V_START + 2]},
+                             sa[is + RHO_START], Sym3::load(sa, is + SIGMA_START)};
+        // the predictor takes the acceleration of the last step's mid-point, which the
+        // corrector kept (or step_grains() put there), the corrector that of this
+        // evaluation
+        GRANSPH::StepRates r = rates_of(ra, ir);
+        if (STAGE == CORRECT)
+          for (int c = 0; c < 3; ++c) r.acc[c] = ftm * f[ix + c];
+        GRANSPH::Regime regime;
+        if (STAGE == PREDICT) {
+          if (EXTRAPOLATE) {    // from the last two mid-points, which PREV then holds
+            const GRANSPH::StepRates e = GRANSPH::extrapolated(
+                r, rates_of(ra, ir + PREV), ra[ir + RATES_DT], ra[ir + PREV + RATES_DT]);
+            r = GRANSPH::select(sa[is + STEPPED] >= 2.0, e, r);
+            for (int c = 0; c < PREV; ++c) ra[ir + PREV + c] = ra[ir + c];
+          }
+          GRANSPH::predict(m, p, s, r, dt, regime);
+          for (int c = 0; c < 3; ++c) sa[is + V_START + c] = s.v[c];
+          sa[is + RHO_START] = s.rho;
+          s.sigma.store(sa, is + SIGMA_START);
+        } else {
+          GRANSPH::correct(m, p, s, r, dt, regime);
+          for (int c = 0; c < 3; ++c) ra[ir + ACC + c] = r.acc[c];
+          if (EXTRAPOLATE) ra[ir + RATES_DT] = dt;
+          const double stepped = sa[is + STEPPED] + 1.0;
+          sa[is + STEPPED] = stepped < 2.0 ? stepped : 2.0;
+        }
+        for (int c = 0; c < 3; ++c) {
+          x[ix + c] = p.x[c];
+          v[ix + c] = p.v[c];
+        }
+        st[ist + RHO] = p.rho;
+        p.sigma.store(st, ist + SIGMA);
+        st[ist + REGIME] = regime;
+      }
+    }
+  };
 
   // the rates in the columns from `at` of the array of all rows
   static GRANSPH::StepRates rates_of(const double *r, int at)

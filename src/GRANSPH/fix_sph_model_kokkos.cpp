@@ -175,6 +175,37 @@ void FixSPHModelKokkos<DeviceType, Model>::final_integrate()
 
 template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::step(int stage)
 {
+  if (this->execution_space == Host)
+    step_on_host(stage);
+  else
+    step_on_device(stage);
+}
+
+// On the host, the plain fix's loop over the grains (the same arithmetic, vectorised) in
+// parallel chunks
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::step_on_host(int stage)
+{
+  constexpr int CHUNK = 256;
+  this->atomKK->sync(Host, this->datamask_read);
+  sync_host();
+  this->step_grains(
+      static_cast<typename FixSPHModel<Model>::Stage>(stage), this->atom->x, this->atom->v,
+      this->atom->f, [](const auto &advance) {
+        const int n = advance.a.n;
+        Kokkos::parallel_for(ParticlePolicy<LMPHostType>(0, (n + CHUNK - 1) / CHUNK),
+                             [&](const int c) {
+                               const int end = (c + 1) * CHUNK;
+                               advance(c * CHUNK, end < n ? end : n);
+                             });
+      });
+  this->atomKK->modified(Host, this->datamask_modify);
+  modified_host();
+}
+
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::step_on_device(int stage)
+{
   AtomKokkos *atomKK = this->atomKK;
   atomKK->sync(this->execution_space, this->datamask_read);
   k_state.template sync<DeviceType>();

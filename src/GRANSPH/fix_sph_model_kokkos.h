@@ -52,6 +52,8 @@ class FixSPHModelKokkos : public FixSPHModel<Model>, public KokkosBase, public S
 
   // device kernels (public: CUDA lambdas may not live in private members)
   void step(int stage);
+  void step_on_host(int stage);
+  void step_on_device(int stage);
   int count_bad_states();
   void reset_cfl_timestep() override;
 

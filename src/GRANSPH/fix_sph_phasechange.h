@@ -19,7 +19,9 @@ namespace LAMMPS_NS {
 
 // its update returns early for disconnected and elastic grains: a scalar loop is faster
 // (the jet collision's step, 1.3x; bench/README.md, fifth round)
-template <> constexpr bool vectorised_step<GRANSPH::PhaseChange> = false;
+template <> struct VectorisedStep<GRANSPH::PhaseChange> {
+  static constexpr bool value = false;
+};
 using FixSPHPhaseChange = FixSPHModel<GRANSPH::PhaseChange>;
 // instantiated once, in fix_sph_model.cpp: a small unit, in which the compiler inlines the
 // model into the step's loop and vectorises it
