@@ -75,7 +75,7 @@ struct DruckerPrager {
   // apex of the cone is cut back to the apex (tension cracking), then a deviator
   // outside the cone is scaled back onto it. Raises regime accordingly. Written without
   // branches (each case a selection, every division by a guarded divisor), so that the
-  // host's loop over the grains vectorises (FixSPHModel::step).
+  // host's loop over the grains vectorises (FixSPHModel::Advance).
   KOKKOS_INLINE_FUNCTION Sym3 return_to_cone(Sym3 s, Regime &regime) const
   {
     const double excess = s.trace() - k_c / (alpha_phi > 0.0 ? alpha_phi : 1.0);

@@ -89,6 +89,7 @@ KOKKOS_INLINE_FUNCTION void predict(const Model &model, ParticleState &p, StepSt
     p.v[a] += half * r.acc[a];
   }
   start.rho = p.rho;
+  // by component: a copy of the whole struct kept GCC 12 from vectorising the host's loop
   start.sigma = {p.sigma.xx, p.sigma.yy, p.sigma.zz, p.sigma.xy, p.sigma.xz, p.sigma.yz};
   p.rho += half * r.drho;
   p.sigma = model.update(p.sigma, p.sigma, r.d, r.w, p.rho, half, regime);
