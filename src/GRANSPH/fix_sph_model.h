@@ -10,6 +10,7 @@
 #include "fix_sph_integrate.h"
 #include "force.h"
 #include "gransph_integrator.h"
+#include "gransph_simd.h"
 #include "update.h"
 
 #include <type_traits>
@@ -122,9 +123,7 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
       const double *f = a.f, *mass = a.mass;
       const int *index = a.index, nr = a.nrates;
       const double dt = a.dt, ftm2v = a.ftm2v;
-#if !defined(__CUDACC__) && !defined(__HIPCC__)
-#pragma omp simd if(simd : VectorisedStep<M>::value)
-#endif
+      GRANSPH_SIMD_IF(VectorisedStep<M>::value)
       for (int k = begin; k < end; ++k) {
         // grain i's values in each array, at a multiple of its row: what a gather can take
         const int i = index[k], ix = 3 * i, ist = NSTATE * i, ir = nr * i, is = NSTART * i;

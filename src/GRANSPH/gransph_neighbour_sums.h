@@ -41,15 +41,7 @@
 
 #include "gransph_kernel.h"
 #include "gransph_pair_terms.h"
-
-// `omp simd` with a sum over the named variables (honoured with -fopenmp or -fopenmp-simd;
-// device compilers go without)
-#if defined(__CUDACC__) || defined(__HIPCC__)
-#define GRANSPH_SIMD_SUM(...)
-#else
-#define GRANSPH_PRAGMA(text) _Pragma(#text)
-#define GRANSPH_SIMD_SUM(...) GRANSPH_PRAGMA(omp simd reduction(+ : __VA_ARGS__))
-#endif
+#include "gransph_simd.h"
 
 namespace GRANSPH {
 

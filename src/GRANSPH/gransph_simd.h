@@ -1,0 +1,20 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: the `omp simd` pragmas of the host's vectorised loops (honoured
+   with -fopenmp or -fopenmp-simd; device compilers go without).
+------------------------------------------------------------------------- */
+
+#ifndef LMP_GRANSPH_SIMD_H
+#define LMP_GRANSPH_SIMD_H
+
+#if defined(__CUDACC__) || defined(__HIPCC__)
+#define GRANSPH_SIMD_SUM(...)
+#define GRANSPH_SIMD_IF(condition)
+#else
+#define GRANSPH_PRAGMA(text) _Pragma(#text)
+// a loop whose lanes sum into the named variables
+#define GRANSPH_SIMD_SUM(...) GRANSPH_PRAGMA(omp simd reduction(+ : __VA_ARGS__))
+// a loop vectorised where the compile-time condition holds, in order otherwise
+#define GRANSPH_SIMD_IF(condition) GRANSPH_PRAGMA(omp simd if(simd : condition))
+#endif
+
+#endif
