@@ -27,19 +27,31 @@ CASES = [
 ]
 KOKKOS = ["-k", "on", "t", "2", "-sf", "kk"]
 
-check = gransph_run.Checks()
-with tempfile.TemporaryDirectory() as tmp:
-    for case, variables in CASES:
-        example = os.path.join(EXAMPLES, case, f"in.{case}")
-        states = []
-        for args in ([], KOKKOS):
-            out = gransph_run.run(example, {**variables, "dump": 1}, args=args, cwd=tmp)
-            assert not args or "sph/granular/kk" in out, "the Kokkos pair style was not used"
-            states.append(gransph_run.read_dump(os.path.join(tmp, f"{case}.dump")))
-        plain, kk = states
-        assert np.max(np.abs(plain["vx"])) > 1e-3, "nothing moved: nothing was compared"
-        options = " ".join(variables.get(k, "") for k in ("pair_options", "fix_options")).strip()
-        label = case + (f" ({options})" if options else "") + \
-            (" own normals" if variables.get("normals") else "") + " plain - kk"
-        gransph_run.check_same_state(check, label, plain, kk, 1e-10)
-check.finish()
+
+def dump_of(case, variables, args, cwd):
+    """Run one of CASES with the given command-line arguments; its final state."""
+    example = os.path.join(EXAMPLES, case, f"in.{case}")
+    gransph_run.run(example, {**variables, "dump": 1}, args=args, cwd=cwd)
+    return gransph_run.read_dump(os.path.join(cwd, f"{case}.dump"))
+
+
+def label_of(case, variables):
+    options = " ".join(variables.get(k, "") for k in ("pair_options", "fix_options")).strip()
+    return case + (f" ({options})" if options else "") + \
+        (" own normals" if variables.get("normals") else "")
+
+
+def main():
+    check = gransph_run.Checks()
+    with tempfile.TemporaryDirectory() as tmp:
+        for case, variables in CASES:
+            plain = dump_of(case, variables, [], tmp)
+            kk = dump_of(case, variables, KOKKOS, tmp)
+            assert "sph/granular/kk" in gransph_run.LAST_OUTPUT, "the Kokkos pair style was not used"
+            assert np.max(np.abs(plain["vx"])) > 1e-3, "nothing moved: nothing was compared"
+            gransph_run.check_same_state(check, label_of(case, variables) + " plain - kk", plain, kk, 1e-10)
+    check.finish()
+
+
+if __name__ == "__main__":
+    main()
