@@ -11,6 +11,7 @@
 #include "force.h"
 #include "gransph_integrator.h"
 #include "gransph_simd.h"
+#include "neighbor.h"
 #include "update.h"
 
 #include <type_traits>
@@ -35,8 +36,7 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
   void initial_integrate(int) override { step(PREDICT); }
   void final_integrate() override
   {
-    step(CORRECT);
-    check_finite();
+    if (step(CORRECT)) check_finite();    // which atom, in the error message
   }
 
   double mobilised_ratio(const GRANSPH::Sym3 &sigma) const override
@@ -63,18 +63,16 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
 
   // Every grain's predictor or corrector step, with x, v, f where this rank's atoms have
   // them: chunks(advance) runs advance(begin, end) over [0, advance.a.n) of the grains,
-  // at once (the plain fix) or in parallel chunks (its Kokkos twin on the host).
-  template <class Chunks> void step_grains(Stage stage, double **x, double **v, double **f,
-                                           Chunks chunks)
+  // at once (the plain fix) or in parallel chunks (its Kokkos twin on the host), and
+  // returns the sum of what advance returns: the corrector's count of grains with a bad
+  // new state (GRANSPH::bad_state).
+  template <class Chunks> int step_grains(Stage stage, double **x, double **v, double **f,
+                                          Chunks chunks)
   {
-    grains.clear();
-    grain_mass.clear();
-    for (int i = 0; i < atom->nlocal; ++i)
-      if (atom->mask[i] & groupbit) {
-        grains.push_back(i);
-        grain_mass.push_back(atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]]);
-      }
-    if (grains.empty()) return;
+    // atoms are exchanged, sorted, created and deleted only when a step reneighbours,
+    // between its predictor and its corrector
+    if (stage == PREDICT || neighbor->ago == 0) list_grains();
+    if (grains.empty()) return 0;
     // a grain without a step predicts with the acceleration of the setup evaluation
     if (stage == PREDICT)
       for (size_t k = 0; k < grains.size(); ++k) {
@@ -87,15 +85,17 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
                         start[0], nrates,       (int) grains.size(), grains.data(),
                         grain_mass.data(), update->dt, force->ftm2v};
     // the model's variant for this run, so that the loop has no branch on it
+    int bad = 0;
     with_run_variant(model, [&](const auto &m) {    // found by ADL: the model's own
       using M = typename std::decay<decltype(m)>::type;
       if (stage == PREDICT)
-        predictor_extrapolated ? chunks(Advance<PREDICT, true, M>{m, a})
-                               : chunks(Advance<PREDICT, false, M>{m, a});
+        bad = predictor_extrapolated ? chunks(Advance<PREDICT, true, M>{m, a})
+                                     : chunks(Advance<PREDICT, false, M>{m, a});
       else
-        predictor_extrapolated ? chunks(Advance<CORRECT, true, M>{m, a})
-                               : chunks(Advance<CORRECT, false, M>{m, a});
+        bad = predictor_extrapolated ? chunks(Advance<CORRECT, true, M>{m, a})
+                                     : chunks(Advance<CORRECT, false, M>{m, a});
     });
+    return bad;
   }
 
  private:
@@ -103,27 +103,41 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
   std::vector<int> grains;
   std::vector<double> grain_mass;
 
-  void step(Stage stage)
+  void list_grains()
   {
-    step_grains(stage, atom->x, atom->v, atom->f,
-                [](const auto &advance) { advance(0, advance.a.n); });
+    grains.clear();
+    grain_mass.clear();
+    for (int i = 0; i < atom->nlocal; ++i)
+      if (atom->mask[i] & groupbit) {
+        grains.push_back(i);
+        grain_mass.push_back(atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]]);
+      }
+  }
+
+  // the number of grains with a bad new state (the corrector)
+  int step(Stage stage)
+  {
+    return step_grains(stage, atom->x, atom->v, atom->f,
+                       [](const auto &advance) { return advance(0, advance.a.n); });
   }
 
   // The step of the grains [begin, end), in a loop that the compiler can vectorise
   // (VectorisedStep): each per-atom array read and written at a fixed stride from its
-  // first row, the choices of a lane as selections.
+  // first row, the choices of a lane as selections. Returns how many of them the
+  // corrector left with a bad state (the run stops), 0 for the predictor.
   template <Stage STAGE, bool EXTRAPOLATE, class M> struct Advance {
     M m;
     GrainArrays a;
 
-    void operator()(int begin, int end) const
+    int operator()(int begin, int end) const
     {
       using GRANSPH::Sym3;
       double *x = a.x, *v = a.v, *st = a.state, *ra = a.rates, *sa = a.start;
       const double *f = a.f, *mass = a.mass;
       const int *index = a.index, nr = a.nrates;
       const double dt = a.dt, ftm2v = a.ftm2v;
-      GRANSPH_SIMD_IF(VectorisedStep<M>::value)
+      int bad = 0;
+      GRANSPH_SIMD_IF_SUM(VectorisedStep<M>::value, bad)
       for (int k = begin; k < end; ++k) {
         // grain i's values in each array, at a multiple of its row: what a gather can take
         const int i = index[k], ix = 3 * i, ist = NSTATE * i, ir = nr * i, is = NSTART * i;
@@ -164,7 +178,9 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
         st[ist + RHO] = p.rho;
         p.sigma.store(st, ist + SIGMA);
         st[ist + REGIME] = regime;
+        if (STAGE == CORRECT) bad += GRANSPH::bad_state(p);
       }
+      return bad;
     }
   };
 

@@ -164,8 +164,7 @@ void FixSPHModelKokkos<DeviceType, Model>::initial_integrate(int)
 template <class DeviceType, class Model>
 void FixSPHModelKokkos<DeviceType, Model>::final_integrate()
 {
-  step(FixSPHModel<Model>::CORRECT);
-  if (count_bad_states()) {
+  if (step(FixSPHModel<Model>::CORRECT)) {
     // find and name the atom on the host; this only happens once, on failure
     this->atomKK->sync(Host, X_MASK | V_MASK | MASK_MASK | TAG_MASK);
     sync_host();
@@ -173,34 +172,39 @@ void FixSPHModelKokkos<DeviceType, Model>::final_integrate()
   }
 }
 
-template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::step(int stage)
+// the predictor or corrector step; the number of grains with a bad new state (corrector)
+template <class DeviceType, class Model> int FixSPHModelKokkos<DeviceType, Model>::step(int stage)
 {
-  if (this->execution_space == Host)
-    step_on_host(stage);
-  else
-    step_on_device(stage);
+  if (this->execution_space == Host) return step_on_host(stage);
+  step_on_device(stage);
+  return stage == FixSPHModel<Model>::CORRECT ? count_bad_states() : 0;
 }
 
 // On the host, the plain fix's loop over the grains (the same arithmetic, vectorised) in
 // parallel chunks
 template <class DeviceType, class Model>
-void FixSPHModelKokkos<DeviceType, Model>::step_on_host(int stage)
+int FixSPHModelKokkos<DeviceType, Model>::step_on_host(int stage)
 {
   constexpr int CHUNK = 256;
   this->atomKK->sync(Host, this->datamask_read);
   sync_host();
-  this->step_grains(
+  const int bad = this->step_grains(
       static_cast<typename FixSPHModel<Model>::Stage>(stage), this->atom->x, this->atom->v,
       this->atom->f, [](const auto &advance) {
         const int n = advance.a.n;
-        Kokkos::parallel_for(ParticlePolicy<LMPHostType>(0, (n + CHUNK - 1) / CHUNK),
-                             [&](const int c) {
-                               const int end = (c + 1) * CHUNK;
-                               advance(c * CHUNK, end < n ? end : n);
-                             });
+        int count = 0;
+        Kokkos::parallel_reduce(
+            ParticlePolicy<LMPHostType>(0, (n + CHUNK - 1) / CHUNK),
+            [&](const int c, int &sum) {
+              const int end = (c + 1) * CHUNK;
+              sum += advance(c * CHUNK, end < n ? end : n);
+            },
+            count);
+        return count;
       });
   this->atomKK->modified(Host, this->datamask_modify);
   modified_host();
+  return bad;
 }
 
 template <class DeviceType, class Model>

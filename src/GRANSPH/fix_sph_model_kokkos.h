@@ -51,8 +51,8 @@ class FixSPHModelKokkos : public FixSPHModel<Model>, public KokkosBase, public S
   void unpack_forward_comm_device(int, int, GRANSPHCompat::tdual_comm_buffer &);
 
   // device kernels (public: CUDA lambdas may not live in private members)
-  void step(int stage);
-  void step_on_host(int stage);
+  int step(int stage);
+  int step_on_host(int stage);
   void step_on_device(int stage);
   int count_bad_states();
   void reset_cfl_timestep() override;

@@ -114,7 +114,14 @@ KOKKOS_INLINE_FUNCTION void correct(const Model &model, ParticleState &p, const 
 // sums only); the density must be positive.
 KOKKOS_INLINE_FUNCTION bool bad_state(double sum, double rho)
 {
-  return !(sum - sum == 0.0) || !(rho > 0.0);
+  return !(sum - sum == 0.0) | !(rho > 0.0);    // no branch: a vectorised loop counts them
+}
+
+KOKKOS_INLINE_FUNCTION bool bad_state(const ParticleState &p)
+{
+  const double sum = p.x[0] + p.x[1] + p.x[2] + p.v[0] + p.v[1] + p.v[2] + p.rho + p.sigma.xx +
+      p.sigma.yy + p.sigma.zz + p.sigma.xy + p.sigma.xz + p.sigma.yz;
+  return bad_state(sum, p.rho);
 }
 
 // The density of eq. 19's sound speed sqrt(E / rho) for a grain of density rho: its own
