@@ -85,6 +85,12 @@ template <class DeviceType> PairSPHGranularKokkos<DeviceType>::~PairSPHGranularK
 template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::init_style()
 {
   PairSPHGranular::init_style();
+  // LAMMPS' Kokkos sizes the GPU's neighbour bins once, at the cut-off of its first init:
+  // an init before any pair style (reset_atom_ids, as our inputs have) leaves the bin
+  // size 0, hence one bin for the whole box and every list build O(N^2) (seen on an
+  // H200: 90 s to set up 1e5 particles). Let this init size them from its cut-off.
+  if (lmp->kokkos->ngpus > 0 && neighbor->binsizeflag && neighbor->binsize_user == 0.0)
+    neighbor->binsizeflag = 0;
   if (!dynamic_cast<SPHStateKokkos *>(integrator))
     error->all(FLERR, "Pair style sph/granular/kk needs the /kk variant of the GRANSPH integrator");
   int flag = 0, cols = 0;
