@@ -389,9 +389,9 @@ void FixSPHIntegrate::check_finite() const
   const int *mask = atom->mask;
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
-    double sum = x[i][0] + x[i][1] + x[i][2] + v[i][0] + v[i][1] + v[i][2];
-    for (int k = 0; k < NCOMM; ++k) sum += state[i][k];
-    if (GRANSPH::bad_state(sum, state[i][RHO]))
+    const GRANSPH::ParticleState p{{x[i][0], x[i][1], x[i][2]}, {v[i][0], v[i][1], v[i][2]},
+                                   state[i][RHO], GRANSPH::Sym3::load(state[i], SIGMA)};
+    if (GRANSPH::bad_state(p))
       error->one(FLERR,
                  "Fix {}: atom {} has a non-finite state or non-positive density (rho {}, v {} {} "
                  "{}) at step {}",

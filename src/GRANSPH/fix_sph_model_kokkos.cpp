@@ -248,7 +248,8 @@ void FixSPHModelKokkos<DeviceType, Model>::step_on_device(int stage)
   if (!predict || this->predictor_extrapolated) k_rates.template modify<DeviceType>();
 }
 
-// non-finite states or non-positive densities among this rank's granular particles
+// non-finite states or non-positive densities among this rank's granular particles (the
+// device's step; on the host the corrector's loop counts them)
 template <class DeviceType, class Model>
 int FixSPHModelKokkos<DeviceType, Model>::count_bad_states()
 {
@@ -262,9 +263,13 @@ int FixSPHModelKokkos<DeviceType, Model>::count_bad_states()
       Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
       LAMMPS_LAMBDA(const int i, int &count) {
         if (!(mask(i) & groupbit)) return;
-        double sum = x(i, 0) + x(i, 1) + x(i, 2) + v(i, 0) + v(i, 1) + v(i, 2);
-        for (int k = 0; k < FSI::NCOMM; ++k) sum += state(i, k);
-        if (GRANSPH::bad_state(sum, state(i, FSI::RHO))) ++count;
+        const GRANSPH::ParticleState p{
+            {x(i, 0), x(i, 1), x(i, 2)},
+            {v(i, 0), v(i, 1), v(i, 2)},
+            state(i, FSI::RHO),
+            {state(i, FSI::SIGMA), state(i, FSI::SIGMA + 1), state(i, FSI::SIGMA + 2),
+             state(i, FSI::SIGMA + 3), state(i, FSI::SIGMA + 4), state(i, FSI::SIGMA + 5)}};
+        if (GRANSPH::bad_state(p)) ++count;
       },
       bad);
   return bad;    // local: the rank that has one stops the run (error->one), no collective

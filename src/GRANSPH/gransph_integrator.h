@@ -109,19 +109,14 @@ KOKKOS_INLINE_FUNCTION void correct(const Model &model, ParticleState &p, const 
   p.sigma = model.update(start.sigma, p.sigma, r.d, r.w, p.rho, dt, regime);
 }
 
-// Whether a particle's state must stop the run: `sum` adds up its position, velocity,
-// density and stress, so it is finite only if they all are (sum - sum is 0 for finite
-// sums only); the density must be positive.
-KOKKOS_INLINE_FUNCTION bool bad_state(double sum, double rho)
-{
-  return !(sum - sum == 0.0) | !(rho > 0.0);    // no branch: a vectorised loop counts them
-}
-
+// Whether a particle's state must stop the run: the sum of its position, velocity,
+// density and stress is finite only if they all are (sum - sum is 0 for finite sums
+// only); the density must be positive. Without a branch (|): a vectorised loop counts them.
 KOKKOS_INLINE_FUNCTION bool bad_state(const ParticleState &p)
 {
   const double sum = p.x[0] + p.x[1] + p.x[2] + p.v[0] + p.v[1] + p.v[2] + p.rho + p.sigma.xx +
       p.sigma.yy + p.sigma.zz + p.sigma.xy + p.sigma.xz + p.sigma.yz;
-  return bad_state(sum, p.rho);
+  return !(sum - sum == 0.0) | !(p.rho > 0.0);
 }
 
 // The density of eq. 19's sound speed sqrt(E / rho) for a grain of density rho: its own
