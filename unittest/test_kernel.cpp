@@ -94,6 +94,7 @@ struct Neighbourhood {
   WendlandC2 kernel;
   Viscosity visc{0.0, 0.0, false, Viscosity::BULK, 0.0};
   bool wall_normal = false, shape_sums = true, wall_friction = false;
+  WallStick stick{false, {0.0, 0.0, 0.0}, 0.0};
 
   Neighbourhood(double h, int dim) : kernel(WendlandC2::make(h, dim)) {}
 
@@ -134,10 +135,11 @@ struct SingleNeighbourhood {
   WendlandC2 kernel;
   Viscosity visc;
   bool wall_normal, shape_sums, wall_friction;
+  WallStick stick;
 
   explicit SingleNeighbourhood(const Neighbourhood &n) :
       near(n), kernel(n.kernel), visc(n.visc), wall_normal(n.wall_normal),
-      shape_sums(n.shape_sums), wall_friction(n.wall_friction)
+      shape_sums(n.shape_sums), wall_friction(n.wall_friction), stick(n.stick)
   {
     const double origin[3] = {0.0, 0.0, 0.0};    // 1.5 m away: a sub-domain 3 m across
     for (const PairParticle &p : n.particles) particles.push_back(PairParticleSingle::of(p, origin));
@@ -418,6 +420,35 @@ TEST(PairTerms, TwoWallsTakeTheirOwnFriction)
     wall.dummy_forces(slide, fd);
     EXPECT_LT(fd[2], 0.0);    // pushed down
     EXPECT_NEAR(std::sqrt(fd[0] * fd[0] + fd[1] * fd[1]), -mu * fd[2], 1e-12 * std::fabs(fd[2]));
+  }
+}
+
+// wall/friction/hold stick: below Coulomb's limit the walls push the grain tangentially
+// with whatever cancels its other tangential acceleration (here gravity along x; the
+// dummies' shear stress, which the stress hold would pass on, counts for nothing) and
+// removes a share of its velocity relative to them; at the limit they push with mu times
+// the normal force against that; the normal push is unchanged; and the dummies take the
+// opposite of what the grain gets.
+TEST(PairTerms, StickWallsHoldUpToCoulombsLimit)
+{
+  const GrainOnFloor rough(-1.0);
+  const double push = rough.near.rates().acc[2];    // the floor's normal push
+  const double g_x = 2.0, rate = 100.0, v_x = 0.3;  // the grain moves at 0.3 m/s along x
+  const double needed = g_x + rate * v_x;           // |T| that holds it
+  for (double mu : {0.1, 0.3, 100.0}) {
+    GrainOnFloor floor(mu);
+    floor.near.stick = WallStick{true, {g_x, 0.0, -9.81}, rate};
+    double slide[4];
+    const ParticleRates r = floor.near.rates(nullptr, slide);
+    EXPECT_NEAR(r.acc[2], push, 1e-12 * push) << mu;
+    EXPECT_NEAR(r.acc[1], 0.0, 1e-12 * push) << mu;
+    EXPECT_NEAR(r.acc[0], -std::fmin(needed, mu * push), 1e-12 * needed) << mu;
+    EXPECT_EQ(slide[0], 0.0) << mu;    // the dummies take the push along slide[1..3]
+    double fd[3];
+    floor.dummy_forces(slide, fd);
+    const double m = floor.near.particles[0].mass;
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(fd[a], -m * r.acc[a], 1e-12 * m * push) << mu << " " << a;
   }
 }
 

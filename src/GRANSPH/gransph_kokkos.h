@@ -48,6 +48,7 @@ template <class DeviceType, class Particle = GRANSPH::PairParticle> struct Devic
   Kokkos::View<const double *, DeviceType> normals;
   // with wall_friction, 1 and 4 per atom
   Kokkos::View<const double *, DeviceType> friction_mu, friction_slide;
+  GRANSPH::WallStick stick;    // with wall_friction: how the walls hold a grain
 
   // one particle's row of the list: contiguous on the host (LayoutRight), strided on GPUs
   struct NeighbourRow {
@@ -89,6 +90,7 @@ template <class DeviceType, class Particle = GRANSPH::PairParticle> struct Devic
     p.normals = normals;
     p.friction_mu = friction_mu;
     p.friction_slide = friction_slide;
+    p.stick = stick;
     return p;
   }
 };

@@ -28,6 +28,7 @@
      double slide(int i, int k)  (with wall_friction: a grain's WallFrictionSums::share
                           (k = 0) and slide_direction (k = 1..3) of this evaluation, ghosts
                           included; read for grains only)
+     GRANSPH::WallStick stick  (with wall_friction: how its walls hold a grain)
 
    Vectorised on the host: each loop over the neighbours is an `omp simd` reduction
    into named scalars, its body free of branches (a neighbour outside the support or of
@@ -119,6 +120,8 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
   Real n0 = 0, n1 = 0, n2 = 0, n3 = 0, n4 = 0, n5 = 0;
   Real t0 = 0, t1 = 0, t2 = 0, t3 = 0, t4 = 0, t5 = 0;
   Real qx = 0, qy = 0, qz = 0;
+  // the friction walls' kernel-weighted velocity (u.), for wall/friction/hold stick
+  Real uw = 0, ux_w = 0, uy_w = 0, uz_w = 0;
 
   const int n = p.num_neighbours(i);
   const auto neighbours = p.neighbours(i);
@@ -126,7 +129,7 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
                    kzz, kxy, kxz, kyz, w_sum, visc_w, dxx, dxy, dxz, dyx, dyy, dyz, dzx, dzy,
                    dzz, gxx, gxy, gxz, gyx, gyy, gyz, gzx, gzy, gzz, ox, oy, oz, v0, v1, v2,
                    v3, v4, v5, fax, fay, faz, fnx, fny, fnz, f_lim, n0, n1, n2, n3, n4, n5,
-                   t0, t1, t2, t3, t4, t5, qx, qy, qz)
+                   t0, t1, t2, t3, t4, t5, qx, qy, qz, uw, ux_w, uy_w, uz_w)
   for (int k = 0; k < n; ++k) {
     const int j = neighbours(k);
     const auto &pj = p.particle(j);
@@ -170,6 +173,11 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
       fny += an * ny;
       fnz += an * nz;
       f_lim += limited ? mu * an : Real(0);
+      const Real vw = limited ? volume * w : Real(0);
+      uw += vw;
+      ux_w += vw * pj.v[0];
+      uy_w += vw * pj.v[1];
+      uz_w += vw * pj.v[2];
       if (VIRIAL) {    // F = m_i (a_n + a_t), 0.5 x_ij (x) F for either part
         const Real hn = limited ? Real(0.5) * m_i * an : Real(0),
                    ht = limited ? Real(0.5) * m_i : Real(0);
@@ -286,10 +294,16 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
   }
   if (FRICTION) {
     const WallFrictionSums friction{{fax, fay, faz}, {fnx, fny, fnz}, f_lim};
-    const double s = friction.share();
+    double s = friction.share();
     double t[3];
     friction.slide_direction(t);
-    friction.add_limited(r.acc, s);
+    const double v_i[3] = {vxi, vyi, vzi};
+    const double v_w[3] = {uw > 0 ? ux_w / uw : 0.0, uw > 0 ? uy_w / uw : 0.0,
+                           uw > 0 ? uz_w / uw : 0.0};
+    if (p.stick.on && p.stick.add_push(r.acc, friction.normal, f_lim, v_i, v_w, t))
+      s = 0.0;    // each dummy takes mu_d (a_d . n_d) t of the push: t = T / limit
+    else
+      friction.add_limited(r.acc, s);
     if (slide) {
       slide[0] = s;
       for (int k = 0; k < 3; ++k) slide[1 + k] = t[k];

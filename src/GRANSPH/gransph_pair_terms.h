@@ -263,6 +263,59 @@ struct WallFrictionSums {
   }
 };
 
+// How walls with a friction of their own hold a grain below Coulomb's limit (pair_style
+// keyword wall/friction/hold). STRESS: with the push of their dummies' stress, whose
+// tangential part is the grains' shear stress amplified by wall/stress (a layer thin
+// enough that the walls carry all its weight holds only as long as its own stress can,
+// and wall/stress ratio lets a monolayer at rest grow a stress pattern that breaks it:
+// validation/README.md, "The rough floor's thinnest layer"). STICK: with whatever
+// tangential push T keeps the grain at the walls' velocity, as a Coulomb contact does:
+// T = -a_t - rate (v - v_w)_t, where a is the grain's acceleration from everything but
+// that push (its other neighbours, the walls' normal push N, gravity), v_w the walls'
+// kernel-weighted velocity, t the part normal to N, and rate the share of the relative
+// velocity removed per unit time (STICK_DAMPING / dt); |T| is limited to the walls'
+// Coulomb limit, sum_d mu_d (a_d . n_d). The tangential velocity left to the
+// predictor-corrector's midpoint decays by 0.64 per step at STICK_DAMPING = 0.5 (1 is
+// marginal: a two-step oscillation).
+struct WallStick {
+  static constexpr double STICK_DAMPING = 0.5;
+  bool on;              // wall/friction/hold stick
+  double gravity[3];    // the grains' gravity (fix gravity), which the walls also hold
+  double rate;          // STICK_DAMPING / dt
+
+  // The walls' push on the grain: adds N + T to acc, whose value on entry is the
+  // acceleration from everything else but gravity; returns T / limit in t_per_limit (each
+  // dummy takes mu_d (a_d . n_d) of it: WallFrictionSums' sliding rule). False where the
+  // walls push the grain with no normal force or carry no friction: the caller falls back.
+  KOKKOS_INLINE_FUNCTION bool add_push(double *acc, const double *normal, double limit,
+                                       const double *v, const double *v_wall,
+                                       double *t_per_limit) const
+  {
+    const double n_len = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    if (!(n_len > 0.0 && limit > 0.0)) return false;
+    const double n[3] = {normal[0] / n_len, normal[1] / n_len, normal[2] / n_len};
+    double a[3], u[3], a_n = 0.0, u_n = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      a[k] = acc[k] + normal[k] + gravity[k];
+      u[k] = v[k] - v_wall[k];
+      a_n += a[k] * n[k];
+      u_n += u[k] * n[k];
+    }
+    double t[3], t_len = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      t[k] = -(a[k] - a_n * n[k]) - rate * (u[k] - u_n * n[k]);
+      t_len += t[k] * t[k];
+    }
+    t_len = sqrt(t_len);
+    const double scale = t_len > limit ? limit / t_len : 1.0;
+    for (int k = 0; k < 3; ++k) {
+      acc[k] += normal[k] + scale * t[k];
+      t_per_limit[k] = scale * t[k] / limit;
+    }
+    return true;
+  }
+};
+
 // Dummy-particle stress, eq. 8 (Adami et al. 2012 generalised to a tensor): the grains'
 // stress extrapolated to dummy particle d, sigma_e = sum_k sigma_k W_dk / sum_k W_dk, and
 // the weight of the grains between them, from R = sum_k rho_k r_dk W_dk / sum_k W_dk with

@@ -55,6 +55,7 @@ template <class Particle> struct HostParticlesOf {
   bool wall_normal, shape_sums, wall_friction;
   const double *normals;    // 3 per atom, with wall_normal or wall_friction
   const double *friction_mu, *friction_slide;    // 1 and 4 per atom, with wall_friction
+  GRANSPH::WallStick stick;                       // with wall_friction
 
   struct NeighbourRow {
     const int *row;
@@ -77,7 +78,7 @@ template <class Particle> struct HostParticlesOf {
   {
     return {single,      firstneigh, numneigh, mask,      granularbit,   wallbit,
             kernel,      visc,       wall_normal, shape_sums, wall_friction, normals,
-            friction_mu, friction_slide};
+            friction_mu, friction_slide, stick};
   }
 };
 using HostParticles = HostParticlesOf<PairParticle>;
@@ -89,7 +90,8 @@ using HostParticles = HostParticlesOf<PairParticle>;
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
     Pair(lmp), h(0.0), visc{DEFAULT_ALPHA, DEFAULT_BETA, false, GRANSPH::Viscosity::BULK, 0.0},
     corrected_gradient(0), wall_normal(0), wall_stress_mode(GRANSPH::WallSums::RATIO),
-    mixed_precision(0), warned_far_from_origin(false), integrator(nullptr), nmax(0),
+    mixed_precision(0), warned_far_from_origin(false), wall_hold_stick(0), integrator(nullptr),
+    nmax(0),
     particles(nullptr),
     particles_single(nullptr), normals(nullptr), friction(nullptr), slide(nullptr)
 {
@@ -148,7 +150,8 @@ void PairSPHGranular::compute(int eflag, int vflag)
                         limited,
                         normals,
                         friction,
-                        slide};
+                        slide,
+                        wall_stick(limited)};
   if (update->setupflag) check_no_coincident(p);
   if (fix.wallbit) {
     walls(p, !limited);
@@ -492,6 +495,8 @@ void PairSPHGranular::warn_if_far_from_single_origin()
      wall/stress paper|ratio  how eq. 8 adds the grains' weight to the dummies
      wall/friction group rough|slip|delta  the friction of the walls of a dummy group:
                               as the sand's (rough), none, or Coulomb's at angle delta
+     wall/friction/hold stress|stick  how those walls hold a grain below Coulomb's limit:
+                              by their dummies' stress, or as a contact (WallStick)
      precision double|mixed   the grains' pair sums in double or single precision
 ------------------------------------------------------------------------- */
 
@@ -513,6 +518,7 @@ void PairSPHGranular::settings(int narg, char **arg)
     return -1;
   };
   friction_walls.clear();
+  wall_hold_stick = 0;
   int iarg = 1;
   while (iarg < narg) {
     const std::string key = arg[iarg];
@@ -561,12 +567,27 @@ void PairSPHGranular::settings(int narg, char **arg)
     else if (key == "wall/stress")
       wall_stress_mode =
           choice(iarg, {"paper", "ratio"}) ? GRANSPH::WallSums::RATIO : GRANSPH::WallSums::PAPER;
+    else if (key == "wall/friction/hold")
+      wall_hold_stick = choice(iarg, {"stress", "stick"});
     else if (key == "precision")
       mixed_precision = choice(iarg, {"double", "mixed"});
     else
       error->all(FLERR, "Pair style sph/granular: unknown keyword {}", key);
     iarg += 2;
   }
+  if (wall_hold_stick && friction_walls.empty())
+    error->all(FLERR,
+               "Pair style sph/granular: wall/friction/hold stick needs walls with a friction "
+               "of their own (wall/friction group delta)");
+}
+
+// how walls with a friction of their own hold the grains in this evaluation
+GRANSPH::WallStick PairSPHGranular::wall_stick(bool limited) const
+{
+  GRANSPH::WallStick stick{limited && wall_hold_stick, {0.0, 0.0, 0.0},
+                           GRANSPH::WallStick::STICK_DAMPING / update->dt};
+  if (stick.on) integrator->gravity_vector(stick.gravity);
+  return stick;
 }
 
 // pair_coeff I J: which types interact; the roles come from the fix groups
@@ -648,23 +669,25 @@ void PairSPHGranular::read_restart(FILE *fp)
 }
 
 // Files of the layout with the precision setting carry this mark before their choices,
-// where an older file has its first choice (0 or 1): so older files still read.
-constexpr int RESTART_WITH_PRECISION = -20261204;
+// where an older file has its first choice (0 or 1): so older files still read. Files
+// with the wall/friction/hold setting too carry the second mark.
+constexpr int RESTART_WITH_PRECISION = -20261204, RESTART_WITH_HOLD = -20261205;
 
 // the settings as h, alpha, beta, then the mark and the choices as whole numbers
 void PairSPHGranular::write_restart_settings(FILE *fp)
 {
   const double values[3] = {h, visc.alpha, visc.beta};
-  const int choices[8] = {RESTART_WITH_PRECISION,
+  const int choices[9] = {RESTART_WITH_HOLD,
                           visc.sound,
                           visc.walls,
                           corrected_gradient,
                           wall_stress_mode,
                           wall_normal,
                           (int) friction_walls.size(),
-                          mixed_precision};
+                          mixed_precision,
+                          wall_hold_stick};
   fwrite(values, sizeof(double), 3, fp);
-  fwrite(choices, sizeof(int), 8, fp);
+  fwrite(choices, sizeof(int), 9, fp);
   for (const FrictionWall &w : friction_walls) {
     fwrite(&w.group, sizeof(int), 1, fp);
     fwrite(&w.mu, sizeof(double), 1, fp);
@@ -674,18 +697,19 @@ void PairSPHGranular::write_restart_settings(FILE *fp)
 void PairSPHGranular::read_restart_settings(FILE *fp)
 {
   double values[3];
-  int choices[7] = {0, 0, 0, 0, 0, 0, 0};    // a file without the mark: double precision
+  // a file without a mark: double precision; without the second: held by stress
+  int choices[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   if (comm->me == 0) {
     utils::sfread(FLERR, values, sizeof(double), 3, fp, nullptr, error);
     int first = 0;
     utils::sfread(FLERR, &first, sizeof(int), 1, fp, nullptr, error);
-    const bool marked = first == RESTART_WITH_PRECISION;
-    if (!marked) choices[0] = first;
-    utils::sfread(FLERR, marked ? choices : choices + 1, sizeof(int), marked ? 7 : 5, fp, nullptr,
+    const int count = first == RESTART_WITH_HOLD ? 8 : first == RESTART_WITH_PRECISION ? 7 : 5;
+    if (count == 5) choices[0] = first;
+    utils::sfread(FLERR, count == 5 ? choices + 1 : choices, sizeof(int), count, fp, nullptr,
                   error);
   }
   MPI_Bcast(values, 3, MPI_DOUBLE, 0, world);
-  MPI_Bcast(choices, 7, MPI_INT, 0, world);
+  MPI_Bcast(choices, 8, MPI_INT, 0, world);
   friction_walls.resize(choices[5]);
   for (FrictionWall &w : friction_walls) {
     if (comm->me == 0) {
@@ -704,6 +728,7 @@ void PairSPHGranular::read_restart_settings(FILE *fp)
   wall_stress_mode = static_cast<GRANSPH::WallSums::Mode>(choices[3]);
   wall_normal = choices[4];
   mixed_precision = choices[6];
+  wall_hold_stick = choices[7];
 }
 
 std::vector<double> PairSPHGranular::rate_settings() const
@@ -720,8 +745,9 @@ std::vector<double> PairSPHGranular::rate_settings() const
     settings.push_back(w.group);
     settings.push_back(w.mu);
   }
-  // last, and only if set: the rates of files from before the option still continue
+  // last, and only if set: the rates of files from before the options still continue
   if (mixed_precision) settings.push_back(-1.0);
+  if (wall_hold_stick) settings.push_back(-2.0);
   return settings;
 }
 

@@ -59,12 +59,14 @@ class PairSPHGranular : public Pair {
     double mu;
   };
   std::vector<FrictionWall> friction_walls;
+  int wall_hold_stick;    // wall/friction/hold stick: those walls hold grains as contacts
   FixSPHIntegrate *integrator;
 
   // defaults of visc, chosen by the convergence study (doc/pair_sph_granular.rst)
   static constexpr double DEFAULT_ALPHA = 0.25, DEFAULT_BETA = 0.0;
 
   void allocate();
+  GRANSPH::WallStick wall_stick(bool limited) const;
   void stop_if_coincident(int i);
   void tally_virial(int i, const double *vir);
   void pack_wall_normals(double *out, int n) const;

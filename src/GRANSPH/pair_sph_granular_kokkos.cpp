@@ -152,6 +152,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   p.shape_sums = corrected_gradient != 0;
   const bool limited = fix.wallbit && !friction_walls.empty();
   p.wall_friction = limited;
+  p.stick = wall_stick(limited);
   if (wall_normal || limited) {
     const int unnormalled = update_wall_normals(nall, limited);
     if (limited && update->setupflag) stop_if_unnormalled(unnormalled);

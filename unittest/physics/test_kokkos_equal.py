@@ -19,6 +19,8 @@ CASES = [
     ("column_collapse", {"steps": 300, "pair_options": "wall/gradient normal"}),
     ("column_collapse", {"steps": 300, "pair_options": "wall/gradient normal", "normals": 1}),
     ("column_collapse", {"steps": 300, "pair_options": "wall/friction floor 20", "normals": 1}),
+    ("column_collapse", {"steps": 300, "pair_options": "wall/friction floor 30 wall/friction/hold stick",
+                         "normals": 1}),
     ("column_collapse", {"steps": 300, "fix_options": "predictor extrapolated"}),
     ("column_collapse", {"steps": 300, "pair_options": "precision mixed"}),
     ("column_collapse", {"steps": 300, "pair_options": "precision mixed wall/friction floor 20",

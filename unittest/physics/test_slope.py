@@ -60,7 +60,16 @@ Seeded results: default gradient 38 / 40 / 36 / 38 / 38 of 42 checks passed for
 Drucker-Prager, its simple-shear matching, the phase change, Sand25 Drucker-Prager and
 Sand25 phase change; gradient corrected 41 / 40 / 37 / 42 / 39.
 
-  test_slope.py [--material Chen2019|Sand25] [--widths 4,8,16] [--seed N]
+--stick puts the layer on a floor of Coulomb friction at the slide angle the model
+declares, holding its grains as contacts do (pair_style sph/granular wall/friction floor
+ANGLE wall/friction/hold stick; the floor's dummies get their normal, +z). Seeded, it
+holds and slides as declared where the rough floor does not: Chen2019 Drucker-Prager,
+Sand25 Drucker-Prager and Sand25 phase change 42 of 42 checks; Chen2019 phase change and
+simple-shear matching 40 of 42, the two failures the held layer of 8 above (its own
+yield, not the floor's); sliding monolayers at 0.290-0.296 m/s^2 against the free
+sliding's 0.295 (Chen2019 Drucker-Prager).
+
+  test_slope.py [--material Chen2019|Sand25] [--widths 4,8,16] [--seed N] [--stick]
                 [--pair "pair keywords"] MODEL [fix keywords ...]
 """
 
@@ -95,7 +104,8 @@ def run(tmp, model, options, material, layers, columns, dx, theta, seed, pair_op
                            "columns": columns, "material": material,
                            "materials": MATERIALS[material][0], "seed": seed,
                            "fix_options": " ".join(options),
-                           "pair_options": pair_options}, cwd=tmp)
+                           "pair_options": pair_options,
+                           "wall_normals": int("wall/friction" in pair_options)}, cwd=tmp)
     words = gransph_run.result_line(out)
     t1, vx1, t2, vx2, z1, z2 = (float(words[i]) for i in (4, 6, 8, 10, 12, 14))
     return vx2, (vx2 - vx1) / (t2 - t1), z2
@@ -121,8 +131,13 @@ def main():
         k = args.index("--pair")
         pair_options = args[k + 1]
         del args[k:k + 2]
+    stick = "--stick" in args
+    if stick:
+        args.remove("--stick")
     model, options = args[0], args[1:]
     threshold = slide_angle(model, options, material)
+    if stick:    # a Coulomb floor at the slide angle, holding the grains as contacts do
+        pair_options += f" wall/friction floor {threshold!r} wall/friction/hold stick"
     below, above = threshold - 1.5, threshold + 1.5
     # sliding freely, a = g (sin - mu cos) at the slide angle's friction mu
     mu = math.tan(math.radians(threshold))
