@@ -62,6 +62,16 @@ TEST(DruckerPrager, MaterialConstantsOfPlaneStrainMatching)
   EXPECT_NEAR(DP.G, E / (2.0 * (1.0 + NU)), 1e-6);
 }
 
+// The friction at which a layer slides (pair_style sph/granular wall/friction material):
+// tan 29.6 deg under the plane-strain matching for phi = 37 deg, tan(phi) under the
+// simple-shear one
+TEST(DruckerPrager, SlideFrictionOfEitherMatching)
+{
+  EXPECT_NEAR(std::atan(DP.slide_friction()) * 180.0 / PI, 29.6172, 1e-4);
+  const DruckerPrager shear = DruckerPrager::from_material(E, NU, PHI, 0.0, 0.0, true);
+  EXPECT_NEAR(shear.slide_friction(), std::tan(PHI), 1e-12);
+}
+
 TEST(DruckerPrager, ElasticBelowTheYieldSurface)
 {
   const Sym3 s = Sym3::iso(-1.0e4);    // pure pressure: well inside the cone

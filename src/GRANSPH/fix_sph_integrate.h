@@ -87,6 +87,9 @@ class FixSPHIntegrate : public Fix {
   // What compute sph/stress/atom reads: the share of the model's strength that the
   // stress sigma uses (1 at yield), and state up to date on the host.
   virtual double mobilised_ratio(const GRANSPH::Sym3 &sigma) const = 0;
+  // the friction coefficient at which the model's layers slide (pair_style sph/granular
+  // wall/friction group material)
+  virtual double slide_friction() const = 0;
   virtual void sync_state_host() {}    // the plain fix keeps it there
   void gravity_vector(double *g) const;  // acceleration of the fix gravity on the grains
   // At a run's setup: whether the run continues the last step's (its first step takes

@@ -43,6 +43,7 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
   {
     return model.mobilised_ratio(sigma);
   }
+  double slide_friction() const override { return model.slide_friction(); }
 
   const Model model;
 

@@ -60,6 +60,10 @@ struct DruckerPrager {
     return sqrt(second_invariant(s)) + alpha_phi * s.trace() - k_c;
   }
 
+  // The friction coefficient at which a cohesionless layer in steady simple shear yields:
+  // tan(theta) = 3 alpha_phi (above)
+  double slide_friction() const { return 3.0 * alpha_phi; }
+
   // The part of the strength that the stress uses, sqrt(J2) / (k_c - alpha_phi I1): 1 on
   // the cone, below 1 inside it. At the apex there is no strength left to mobilise: 1.
   // With cohesion the strength there is k_c - alpha_phi I1 = round-off, hence the

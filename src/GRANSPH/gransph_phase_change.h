@@ -38,6 +38,9 @@ struct PhaseChange {
     return from_material(m.E, m.nu, m.rho_c, m.xi, m.mu_s, m.mu_2);
   }
 
+  // The friction coefficient at which a layer starts to slide: the static one
+  double slide_friction() const { return mu_s; }
+
   // Shear stress over the static yield stress, tau / (mu_s p): below 1 in the solid, 1 at
   // yield, mu(I) / mu_s when flowing. A stress-free (disconnected) state has no strength
   // left to mobilise: 1.

@@ -334,7 +334,7 @@ int PairSPHGranular::pack_wall_friction(double *out, const double *unit_normals,
     out[i] = -1.0;
     if (!(mask[i] & wallbit)) continue;
     for (const FrictionWall &w : friction_walls)
-      if (mask[i] & group->bitmask[w.group]) out[i] = w.mu;
+      if (mask[i] & group->bitmask[w.group]) out[i] = friction_of(w);
     const double *ni = &unit_normals[3 * i];
     if (out[i] >= 0.0 && ni[0] == 0.0 && ni[1] == 0.0 && ni[2] == 0.0 && missing < 0 &&
         i < atom->nlocal)
@@ -493,8 +493,9 @@ void PairSPHGranular::warn_if_far_from_single_origin()
      wall/gradient full|normal  dummy neighbours enter drho and grad_v fully, or
                               along the wall normal only
      wall/stress paper|ratio  how eq. 8 adds the grains' weight to the dummies
-     wall/friction group rough|slip|delta  the friction of the walls of a dummy group:
-                              as the sand's (rough), none, or Coulomb's at angle delta
+     wall/friction group rough|slip|material|delta  the friction of the walls of a dummy
+                              group: as the sand's (rough), none, or Coulomb's at the slide
+                              friction of the integrator's model or at angle delta
      wall/friction/hold stress|stick  how those walls hold a grain below Coulomb's limit:
                               by their dummies' stress, or as a contact (WallStick)
      precision double|mixed   the grains' pair sums in double or single precision
@@ -533,12 +534,14 @@ void PairSPHGranular::settings(int narg, char **arg)
       double mu = -1.0;    // rough
       if (value == "slip")
         mu = 0.0;
+      else if (value == "material")
+        mu = FrictionWall::MATERIAL;
       else if (value != "rough") {
         const double delta = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
         if (delta < 0.0 || delta >= 90.0)
           error->all(FLERR,
-                     "Pair style sph/granular: wall/friction of group {} must be rough, slip or "
-                     "an angle in [0, 90) degrees, not {}",
+                     "Pair style sph/granular: wall/friction of group {} must be rough, slip, "
+                     "material or an angle in [0, 90) degrees, not {}",
                      arg[iarg + 1], value);
         mu = tan(delta * M_PI / 180.0);
       }
@@ -579,6 +582,12 @@ void PairSPHGranular::settings(int narg, char **arg)
     error->all(FLERR,
                "Pair style sph/granular: wall/friction/hold stick needs walls with a friction "
                "of their own (wall/friction group delta)");
+}
+
+// the friction coefficient of a wall with a friction of its own (-1 for a rough one)
+double PairSPHGranular::friction_of(const FrictionWall &w) const
+{
+  return w.mu == FrictionWall::MATERIAL ? integrator->slide_friction() : w.mu;
 }
 
 // how walls with a friction of their own hold the grains in this evaluation

@@ -54,10 +54,13 @@ class PairSPHGranular : public Pair {
   // walls with a friction of their own (wall/friction): the dummies of group `group`
   // (an index into LAMMPS' groups) limit the grains' tangential force at mu times the
   // normal one, mu = tan(delta) (0: slip); the last entry that holds a dummy counts
+  // (-1: rough; MATERIAL: the slide friction of the integrator's model)
   struct FrictionWall {
+    static constexpr double MATERIAL = -2.0;
     int group;
     double mu;
   };
+  double friction_of(const FrictionWall &w) const;
   std::vector<FrictionWall> friction_walls;
   int wall_hold_stick;    // wall/friction/hold stick: those walls hold grains as contacts
   FixSPHIntegrate *integrator;

@@ -45,7 +45,7 @@ CASES = [
      dict(pair_style="sph/granular 0.012 wall/friction floor 20 wall/friction/hold glue"),
      "unknown value glue of keyword wall/friction/hold"),
     ("wall/friction angle of 90", dict(pair_style="sph/granular 0.012 wall/friction floor 90"),
-     r"wall/friction of group floor must be rough, slip or an angle in \[0, 90\) degrees, not 90"),
+     r"wall/friction of group floor must be rough, slip, material or an angle in \[0, 90\) degrees, not 90"),
     ("wall/friction without a value", dict(pair_style="sph/granular 0.012 wall/friction floor"),
      "wall/friction needs a group and a value"),
     ("wall/friction without normals", dict(pair_style="sph/granular 0.012 wall/friction floor 20"),

@@ -62,7 +62,7 @@ Sand25 phase change; gradient corrected 41 / 40 / 37 / 42 / 39.
 
 --stick puts the layer on a floor of Coulomb friction at the slide angle the model
 declares, holding its grains as contacts do (pair_style sph/granular wall/friction floor
-ANGLE wall/friction/hold stick; the floor's dummies get their normal, +z). Seeded, it
+material wall/friction/hold stick; the floor's dummies get their normal, +z). Seeded, it
 holds and slides as declared where the rough floor does not: Chen2019 Drucker-Prager,
 Sand25 Drucker-Prager and Sand25 phase change 42 of 42 checks; Chen2019 phase change and
 simple-shear matching 40 of 42, the two failures the held layer of 8 above (its own
@@ -136,8 +136,8 @@ def main():
         args.remove("--stick")
     model, options = args[0], args[1:]
     threshold = slide_angle(model, options, material)
-    if stick:    # a Coulomb floor at the slide angle, holding the grains as contacts do
-        pair_options += f" wall/friction floor {threshold!r} wall/friction/hold stick"
+    if stick:    # a Coulomb floor at the model's slide angle, holding grains as contacts do
+        pair_options += " wall/friction floor material wall/friction/hold stick"
     below, above = threshold - 1.5, threshold + 1.5
     # sliding freely, a = g (sin - mu cos) at the slide angle's friction mu
     mu = math.tan(math.radians(threshold))
