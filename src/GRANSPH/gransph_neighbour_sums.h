@@ -294,16 +294,15 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
   }
   if (FRICTION) {
     const WallFrictionSums friction{{fax, fay, faz}, {fnx, fny, fnz}, f_lim};
-    double s = friction.share();
-    double t[3];
-    friction.slide_direction(t);
     const double v_i[3] = {vxi, vyi, vzi};
     const double v_w[3] = {uw > 0 ? ux_w / uw : 0.0, uw > 0 ? uy_w / uw : 0.0,
                            uw > 0 ? uz_w / uw : 0.0};
-    if (p.stick.on && p.stick.add_push(r.acc, friction.normal, f_lim, v_i, v_w, t))
-      s = 0.0;    // each dummy takes mu_d (a_d . n_d) t of the push: t = T / limit
-    else
+    double s = 0.0, t[3];    // share 0 under stick: each dummy takes mu_d (a_d . n_d) t
+    if (!(p.stick.on && p.stick.add_push(r.acc, friction.normal, f_lim, v_i, v_w, t))) {
+      s = friction.share();
+      friction.slide_direction(t);
       friction.add_limited(r.acc, s);
+    }
     if (slide) {
       slide[0] = s;
       for (int k = 0; k < 3; ++k) slide[1 + k] = t[k];
