@@ -470,27 +470,28 @@ int FixSPHIntegrate::pack_restart(int i, double *buf)
 
 // Files of the other predictor's layout (a file of `predictor midpoint` read under
 // extrapolated, or the reverse) give the columns both have: the grain's next step
-// extrapolates once its own two mid-points are known. Files of earlier versions hold the
-// state only: those atoms start without a step.
+// extrapolates once its own two mid-points are known. Files written before the viscous
+// pressure left the state (STATE_WITH_VISC columns) are read past that column. Files of
+// earlier versions hold the state only: those atoms start without a step.
 void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   const int size = static_cast<int>(extra[nlocal][m++]) - 1;
-  double *row = &extra[nlocal][m];
+  const double *row = &extra[nlocal][m];
   const int other_nrates = nrates == NRATES ? RATES_DT : NRATES;
-  if (size == row_size()) {
-    unpack_exchange(nlocal, row);
-  } else if (size == NSTATE + other_nrates + NSTART) {
-    memcpy(state[nlocal], row, NSTATE * sizeof(double));
-    for (int k = 0; k < nrates; ++k) rates[nlocal][k] = k < RATES_DT ? row[NSTATE + k] : 0.0;
-    memcpy(start[nlocal], row + NSTATE + other_nrates, NSTART * sizeof(double));
-    start[nlocal][STEPPED] = fmin(start[nlocal][STEPPED], 1.0);
-  } else {
-    memcpy(state[nlocal], row, NSTATE * sizeof(double));
-  }
+  memcpy(state[nlocal], row, NSTATE * sizeof(double));
   restored = 1;
+  for (const int nstate : {NSTATE, STATE_WITH_VISC})
+    for (const int nr : {nrates, other_nrates})
+      if (size == nstate + nr + NSTART) {
+        for (int k = 0; k < nrates; ++k)
+          rates[nlocal][k] = k < RATES_DT || nr == nrates ? row[nstate + k] : 0.0;
+        memcpy(start[nlocal], row + nstate + nr, NSTART * sizeof(double));
+        if (nr != nrates) start[nlocal][STEPPED] = fmin(start[nlocal][STEPPED], 1.0);
+        return;
+      }
 }
 
 int FixSPHIntegrate::size_restart(int /*nlocal*/)

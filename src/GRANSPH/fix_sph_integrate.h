@@ -27,10 +27,11 @@ namespace LAMMPS_NS {
 class FixSPHIntegrate : public Fix {
  public:
   // Columns of the per-atom arrays. STATE is restarted and is the fix's per-atom
-  // output (f_ID[1] = rho, f_ID[2..7] = stress, f_ID[8] = GRANSPH::Regime,
-  // f_ID[9] = the pressure the artificial viscosity adds, from the pair style); its
-  // first NCOMM columns are forward-communicated to ghosts.
-  enum { RHO = 0, SIGMA = 1, REGIME = 7, VISC_PRESSURE = 8, NSTATE = 9, NCOMM = 7 };
+  // output (f_ID[1] = rho, f_ID[2..7] = stress, f_ID[8] = GRANSPH::Regime); its
+  // first NCOMM columns are forward-communicated to ghosts. Restart files written
+  // before December 2026 carry one more state column (STATE_WITH_VISC: the viscous
+  // pressure, now compute sph/visc/atom's).
+  enum { RHO = 0, SIGMA = 1, REGIME = 7, NSTATE = 8, STATE_WITH_VISC = 9, NCOMM = 7 };
   // RATES: what the pair style writes, and the acceleration of the same evaluation
   // that the next predictor uses; from RATES_DT on, only with predictor extrapolated
   // (which alone allocates those columns, see nrates, so that the default keeps the

@@ -108,7 +108,6 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
   // grad_v[a][b] = dv_a/dx_b
   Real lxx = 0, lxy = 0, lxz = 0, lyx = 0, lyy = 0, lyz = 0, lzx = 0, lzy = 0, lzz = 0;
   Real kxx = 0, kyy = 0, kzz = 0, kxy = 0, kxz = 0, kyz = 0;    // shape
-  Real w_sum = 0, visc_w = 0;
   // WallVelocitySums: drho (d..), grad_v (g..), offset (o.)
   Real dxx = 0, dxy = 0, dxz = 0, dyx = 0, dyy = 0, dyz = 0, dzx = 0, dzy = 0, dzz = 0;
   Real gxx = 0, gxy = 0, gxz = 0, gyx = 0, gyy = 0, gyz = 0, gzx = 0, gzy = 0, gzz = 0;
@@ -126,7 +125,7 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
   const int n = p.num_neighbours(i);
   const auto neighbours = p.neighbours(i);
   GRANSPH_SIMD_SUM(drho, ax, ay, az, lxx, lxy, lxz, lyx, lyy, lyz, lzx, lzy, lzz, kxx, kyy,
-                   kzz, kxy, kxz, kyz, w_sum, visc_w, dxx, dxy, dxz, dyx, dyy, dyz, dzx, dzy,
+                   kzz, kxy, kxz, kyz, dxx, dxy, dxz, dyx, dyy, dyz, dzx, dzy,
                    dzz, gxx, gxy, gxz, gyx, gyy, gyz, gzx, gzy, gzz, ox, oy, oz, v0, v1, v2,
                    v3, v4, v5, fax, fay, faz, fnx, fny, fnz, f_lim, n0, n1, n2, n3, n4, n5,
                    t0, t1, t2, t3, t4, t5, qx, qy, qz, uw, ux_w, uy_w, uz_w)
@@ -241,9 +240,6 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
       kxz += -volume * rx * gwz;
       kyz += -volume * ry * gwz;
     }
-    // the kernel-weighted sums of the viscous-pressure diagnostic, rho_i rho_j Pi_ij / 2
-    w_sum += volume * w;
-    visc_w += volume * w * (Real(0.5) * rho_i * pj.rho * visc);
     if (WALL_NORMAL) {
       const Real m_w = to_wall ? m : Real(0), s_w = to_wall ? -volume : Real(0);
       dxx += m_w * ux * gwx;
@@ -283,9 +279,7 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
   ParticleRates r{drho,
                   {ax, ay, az},
                   {{lxx, lxy, lxz}, {lyx, lyy, lyz}, {lzx, lzy, lzz}},
-                  {kxx, kyy, kzz, kxy, kxz, kyz},
-                  w_sum,
-                  visc_w};
+                  {kxx, kyy, kzz, kxy, kxz, kyz}};
   if (WALL_NORMAL) {
     const WallVelocitySums walls{{{dxx, dxy, dxz}, {dyx, dyy, dyz}, {dzx, dzy, dzz}},
                                  {{gxx, gxy, gxz}, {gyx, gyy, gyz}, {gzx, gzy, gzz}},
@@ -350,6 +344,44 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
                         : granular_rates_of<true, false>(p, i, vir, slide);
   return p.shape_sums ? granular_rates_of<false, true>(p, i, vir, slide)
                       : granular_rates_of<false, false>(p, i, vir, slide);
+}
+
+// The viscous-pressure diagnostic of granular particle i (compute sph/visc/atom): the
+// kernel-weighted mean over its neighbours of rho_i rho_j Pi_ij / 2, the pressure that,
+// put in place of Pi_ij in eq. 6b, pushes the pair apart as much. A loop of its own, run
+// on the steps that ask for it only: granular_rates does not pay for it.
+template <class Particles>
+KOKKOS_INLINE_FUNCTION double viscous_pressure(const Particles &p, int i)
+{
+  using Real = typename Particles::Real;
+  const auto &pi = p.particle(i);
+  const Real xi = pi.x[0], yi = pi.x[1], zi = pi.x[2];
+  const Real vxi = pi.v[0], vyi = pi.v[1], vzi = pi.v[2];
+  const Real rho_i = pi.rho, c_i = pi.c;
+  const WendlandC2Of<Real> kernel = p.kernel.template in_precision<Real>();
+  const Viscosity viscosity = p.visc;
+  const Real cutsq = kernel.cutsq(), h = kernel.h;
+  Real w_sum = 0, visc_w = 0;
+  const int n = p.num_neighbours(i);
+  const auto neighbours = p.neighbours(i);
+  GRANSPH_SIMD_SUM(w_sum, visc_w)
+  for (int k = 0; k < n; ++k) {
+    const int j = neighbours(k);
+    const auto &pj = p.particle(j);
+    const bool grain = p.granular(j), dummy = p.wall(j);
+    const Real rx = xi - pj.x[0], ry = yi - pj.x[1], rz = zi - pj.x[2];
+    const Real rsq = rx * rx + ry * ry + rz * rz;
+    const bool inside = (grain || dummy) && rsq < cutsq;
+    const Real w = inside ? kernel.w_inside(kernel.q(rsq)) : Real(0);
+    const Real dvx = vxi - pj.v[0], dvy = vyi - pj.v[1], dvz = vzi - pj.v[2];
+    const Real pi_ij = monaghan_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, h, viscosity,
+                                          Real(0.5) * (c_i + pj.c), Real(0.5) * (rho_i + pj.rho));
+    const Real visc = grain || viscosity.walls ? pi_ij : Real(0);
+    const Real volume = pj.mass * pj.inv_rho;
+    w_sum += volume * w;
+    visc_w += volume * w * (Real(0.5) * rho_i * pj.rho * visc);
+  }
+  return w_sum > 0 ? double(visc_w) / double(w_sum) : 0.0;
 }
 
 // The sums of eq. 8 for dummy particle d over its granular neighbours.

@@ -134,8 +134,6 @@ struct ParticleRates {
   double acc[3];          // eq. 6b
   double grad_v[3][3];    // velocity gradient dv_a/dx_b, sum_j m_j/rho_j v_ji (x) grad_i W_ij
   Sym3 shape;             // sum_j m_j/rho_j x_ji (x) grad_i W_ij: I inside the material
-  double w_sum;           // sum_j m_j/rho_j W_ij
-  double visc_w;          // sum_j m_j/rho_j W_ij rho_i rho_j Pi_ij / 2
 
   // Below this determinant of `shape` (the full-support value is 1; a flat free
   // surface has about 0.5) a particle has too few neighbours for the correction.
@@ -157,13 +155,6 @@ struct ParticleRates {
       const double g[3] = {grad_v[a][0], grad_v[a][1], grad_v[a][2]};
       for (int b = 0; b < 3; ++b) grad_v[a][b] = g[0] * inv[0][b] + g[1] * inv[1][b] + g[2] * inv[2][b];
     }
-  }
-
-  // Kernel-weighted mean over the neighbours of the pressure that the artificial
-  // viscosity adds (the diagnostic to compare with the granular stress)
-  KOKKOS_INLINE_FUNCTION double viscous_pressure() const
-  {
-    return w_sum > 0.0 ? visc_w / w_sum : 0.0;
   }
 
   // strain-rate tensor, eq. 34: the symmetric part of grad_v

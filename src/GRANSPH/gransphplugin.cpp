@@ -8,6 +8,7 @@
 
 #include "compute_sph_runout.h"
 #include "compute_sph_stress_atom.h"
+#include "compute_sph_visc_atom.h"
 #include "compute_sph_wallforce.h"
 #include "fix_sph_elastoplastic.h"
 #include "fix_sph_inflow.h"
@@ -103,6 +104,9 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   register_style(reg, lmp, handle, "compute", "sph/stress/atom",
                  "GRANSPH: per-atom p, q, principal stresses, Lode angle, mobilised strength",
                  (void *) &compute_creator<ComputeSPHStressAtom>, true);
+  register_style(reg, lmp, handle, "compute", "sph/visc/atom",
+                 "GRANSPH: per-atom pressure of the artificial viscosity",
+                 (void *) &compute_creator<ComputeSPHViscAtom>, true);
   register_style(reg, lmp, handle, "compute", "sph/runout",
                  "GRANSPH: deposit edge, skirt and height from the thickness profile",
                  (void *) &compute_creator<ComputeSPHRunout>, true);

@@ -15,6 +15,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "compute_sph_visc_atom.h"
 #include "domain.h"
 #include "error.h"
 #include "fix_sph_integrate.h"
@@ -91,7 +92,7 @@ PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
     Pair(lmp), h(0.0), visc{DEFAULT_ALPHA, DEFAULT_BETA, false, GRANSPH::Viscosity::BULK, 0.0},
     corrected_gradient(0), wall_normal(0), wall_stress_mode(GRANSPH::WallSums::RATIO),
     mixed_precision(0), warned_far_from_origin(false), wall_hold_stick(0), integrator(nullptr),
-    nmax(0),
+    viscous_pressure_step(-1), viscous_pressure_nlocal(0), nmax(0),
     particles(nullptr),
     particles_single(nullptr), normals(nullptr), friction(nullptr), slide(nullptr)
 {
@@ -288,13 +289,48 @@ template <class Particles> void PairSPHGranular::grains(const Particles &p)
     GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, vflag_either ? vir : nullptr, slides);
     for (int a = 0; a < 3; ++a) f[i][a] += particles[i].mass * r.acc[a] / force->ftm2v;
     if (corrected_gradient) r.correct_gradient(dim);
-    fix.state[i][FixSPHIntegrate::VISC_PRESSURE] = r.viscous_pressure();
     double *fix_rates = fix.rates[i];
     fix_rates[FixSPHIntegrate::DRHO] = r.drho;
     r.strain().store(&fix_rates[FixSPHIntegrate::STRAIN]);
     r.spin().store(&fix_rates[FixSPHIntegrate::SPIN]);
     if (vflag_either) tally_virial(i, vir);
   }
+  if (sums_viscous_pressure()) viscous_pressures(p);
+}
+
+// the viscous-pressure diagnostic of the owned atoms, for compute sph/visc/atom
+template <class Particles> void PairSPHGranular::viscous_pressures(const Particles &p)
+{
+  visc_pressure.assign(atom->nlocal, 0.0);
+  for (int ii = 0; ii < list->inum; ++ii) {
+    const int i = list->ilist[ii];
+    if (p.granular(i)) visc_pressure[i] = GRANSPH::viscous_pressure(p, i);
+  }
+  summed_viscous_pressure();
+}
+
+bool PairSPHGranular::sums_viscous_pressure() const
+{
+  for (Compute *c : visc_computes)
+    if (c->matchstep(update->ntimestep)) return true;
+  return false;
+}
+
+void PairSPHGranular::summed_viscous_pressure()
+{
+  viscous_pressure_step = update->ntimestep;
+  viscous_pressure_nlocal = atom->nlocal;
+}
+
+// summed in this step's evaluation, for the atoms there are now
+bool PairSPHGranular::has_viscous_pressure() const
+{
+  return viscous_pressure_step == update->ntimestep && viscous_pressure_nlocal == atom->nlocal;
+}
+
+const double *PairSPHGranular::viscous_pressure()
+{
+  return has_viscous_pressure() ? visc_pressure.data() : nullptr;
 }
 
 void PairSPHGranular::grow(int n)
@@ -647,6 +683,10 @@ void PairSPHGranular::init_style()
                "Pair style sph/granular: wall/friction needs dummy walls: the integrator fix "
                "has no walls group");
   comm_forward = friction_walls.empty() ? 0 : SLIDE;    // how the grains slide on the walls
+  visc_computes.clear();
+  for (int i = 0; i < modify->ncompute; ++i)
+    if (auto c = dynamic_cast<ComputeSPHViscAtom *>(modify->compute[i])) visc_computes.push_back(c);
+  viscous_pressure_step = -1;
   // a full list: each particle sums into itself alone, with no reverse communication
   GRANSPHCompat::request_full_list(neighbor, this, instance_me);
 }

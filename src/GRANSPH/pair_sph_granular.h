@@ -43,6 +43,12 @@ class PairSPHGranular : public Pair {
   // rates of the last step only if they are unchanged
   std::vector<double> rate_settings() const;
 
+  // The pressure the artificial viscosity adds at each owned atom (0 but at grains),
+  // which compute sph/visc/atom reports: summed only in the evaluations of the steps
+  // such a compute is scheduled to run on (as LAMMPS tallies per-atom energies only on
+  // the steps a compute asks for them); null where this step's evaluation did not sum it.
+  virtual const double *viscous_pressure();
+
  protected:
   double h;                                   // smoothing length; the kernel support is 2h
   GRANSPH::Viscosity visc;                    // eq. 7
@@ -81,6 +87,14 @@ class PairSPHGranular : public Pair {
   void forward_comm_friction_slide();
   double single_precision_origin(double *origin) const;
   void warn_if_far_from_single_origin();
+  // the viscous-pressure diagnostic: the computes that report it, and the step of the
+  // last evaluation that summed it (-1: none) with the owned atoms it summed for
+  std::vector<class ComputeSPHViscAtom *> visc_computes;
+  bigint viscous_pressure_step;
+  int viscous_pressure_nlocal;
+  bool sums_viscous_pressure() const;    // this evaluation sums it for them
+  void summed_viscous_pressure();        // it did
+  bool has_viscous_pressure() const;     // of this step's atoms
 
  private:
   int nmax;
@@ -90,6 +104,7 @@ class PairSPHGranular : public Pair {
   double *normals;    // with wall/gradient normal or wall/friction: pack_wall_normals()
   double *friction;   // with wall/friction: pack_wall_friction()
   double *slide;      // with wall/friction: 4 per atom, a grain's share and slide direction
+  std::vector<double> visc_pressure;    // owned atoms: viscous_pressure()
 
   void grow(int n);
   void pack_particles(int from, int to);
@@ -99,6 +114,7 @@ class PairSPHGranular : public Pair {
   template <class Particles> void wall_forces(const Particles &p);
   template <class Particles> void add_wall_force(const Particles &p, int d, bool has_grains);
   template <class Particles> void grains(const Particles &p);
+  template <class Particles> void viscous_pressures(const Particles &p);
 };
 
 }    // namespace LAMMPS_NS

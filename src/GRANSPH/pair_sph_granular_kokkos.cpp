@@ -197,7 +197,6 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   } else
     grains(p, kk);
   kk.k_rates.template modify<DeviceType>();
-  kk.k_state.template modify<DeviceType>();
   if (limited) {
     k_slide.template modify<DeviceType>();
     forward_comm_friction_slide();
@@ -416,7 +415,6 @@ void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p, SPHStateKokko
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
   auto rates = kk.k_rates.template view<DeviceType>();
-  auto state = kk.k_state.template view<DeviceType>();
   auto f = atomKK->k_f.template view<DeviceType>();
   auto vatom = k_vatom.template view<DeviceType>();
   const int want_virial = vflag_either, want_vatom = vflag_atom;
@@ -438,7 +436,6 @@ void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p, SPHStateKokko
         if (limited)
           for (int k = 0; k < SLIDE; ++k) slide(SLIDE * i + k) = s[k];
         if (corrected) r.correct_gradient(dim);
-        state(i, FSI::VISC_PRESSURE) = r.viscous_pressure();
         const double m = particles(i).mass;
         for (int a = 0; a < 3; ++a) f(i, a) += m * r.acc[a] / ftm2v;
         rates(i, FSI::DRHO) = r.drho;
@@ -449,6 +446,36 @@ void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p, SPHStateKokko
       ev);
   if (vflag_global)
     for (int k = 0; k < 6; ++k) virial[k] += ev.v[k];
+  if (sums_viscous_pressure()) viscous_pressures(p);
+}
+
+// the viscous-pressure diagnostic of the owned atoms, for compute sph/visc/atom
+template <class DeviceType>
+template <class Particles>
+void PairSPHGranularKokkos<DeviceType>::viscous_pressures(const Particles &p)
+{
+  const int nlocal = atom->nlocal;
+  if ((int) k_visc_pressure.extent(0) < nlocal)
+    k_visc_pressure = decltype(k_visc_pressure)("pair:visc_pressure", atom->nmax);
+  auto out = k_visc_pressure.template view<DeviceType>();
+  auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<DeviceType>(0, nlocal), LAMMPS_LAMBDA(const int i) { out(i) = 0.0; });
+  Kokkos::parallel_for(
+      ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
+      LAMMPS_LAMBDA(const int ii) {
+        const int i = ilist(ii);
+        if (p.granular(i)) out(i) = GRANSPH::viscous_pressure(p, i);
+      });
+  k_visc_pressure.template modify<DeviceType>();
+  summed_viscous_pressure();
+}
+
+template <class DeviceType> const double *PairSPHGranularKokkos<DeviceType>::viscous_pressure()
+{
+  if (!has_viscous_pressure()) return nullptr;
+  k_visc_pressure.sync_host();
+  return k_visc_pressure.view_host().data();
 }
 
 namespace LAMMPS_NS {

@@ -31,6 +31,7 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   ~PairSPHGranularKokkos() override;
   void compute(int, int) override;
   void init_style() override;
+  const double *viscous_pressure() override;
   // how the grains slide on walls with a friction of their own, to the ghosts: on the
   // device, or through the host when comm/kokkos takes the classic path
   int pack_forward_comm(int, int *, double *, int, int *) override;
@@ -48,6 +49,7 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   void wall_forces(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
   // Particles: DeviceParticles<DeviceType> or, under precision mixed, over PairParticleSingle
   template <class Particles> void grains(const Particles &p, SPHStateKokkos &kk);
+  template <class Particles> void viscous_pressures(const Particles &p);
 
  private:
   GRANSPHCompat::tdual_virial k_vatom;
@@ -60,6 +62,8 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   Kokkos::DualView<double *, DeviceType> k_normals, k_friction;
   // with wall/friction, 4 per atom: a grain's share and slide direction
   Kokkos::DualView<double *, DeviceType> k_slide;
+  // owned atoms: viscous_pressure()
+  Kokkos::DualView<double *, DeviceType> k_visc_pressure;
 
   int update_wall_normals(int nall, bool limited);
   auto dummy_forces(SPHStateKokkos &kk);

@@ -48,6 +48,11 @@ CASES = [
      r"wall/friction of group floor must be rough, slip, material or an angle in \[0, 90\) degrees, not 90"),
     ("wall/friction without a value", dict(pair_style="sph/granular 0.012 wall/friction floor"),
      "wall/friction needs a group and a value"),
+    ("sph/visc/atom read before the step's force evaluation",
+     dict(run="compute visc sand sph/visc/atom\ncompute pvisc sand reduce max c_visc\n"
+              "variable still equal 0*c_pvisc\n"
+              "fix hold floor sph/move 0 0 v_still\nrun 10"),
+     r"the viscous pressure was not summed on step 0: .* not before it"),
     ("wall/friction without normals", dict(pair_style="sph/granular 0.012 wall/friction floor 20"),
      "of a wall/friction group has no wall normal"),
     ("wall/friction without walls",
@@ -186,6 +191,15 @@ with tempfile.TemporaryDirectory() as tmp:
         f.write("# UNITS: si\n" + good + "Short 2450 20e6 0.3 37 0 0 1500 1.1 0.6\n" + good)
     code, error = run_case(tmp, {})
     check("good input runs", code == 0 and not error, error or "no error")
+    # the viscous pressure is summed on the steps its output asks for, and only there
+    for args in ([], KOKKOS):
+        code, error = run_case(tmp, dict(run="compute visc sand sph/visc/atom\n"
+                                             "dump d sand custom 5 visc.dump id c_visc\nrun 10"), args)
+        dumped = open(os.path.join(tmp, "visc.dump")).read().split("ITEM: TIMESTEP\n")[1:] \
+            if code == 0 else []
+        check("sph/visc/atom in a dump every 5 steps" + (" (/kk)" if args else ""),
+              code == 0 and not error and [d.split()[0] for d in dumped] == ["0", "5", "10"],
+              error or f"steps dumped: {[d.split()[0] for d in dumped]}")
     for name, fields, expected in CASES:
         code, error = run_case(tmp, fields)
         check(name, code != 0 and re.search(expected, error), error or "no error")

@@ -4,7 +4,8 @@ column collapse (elastoplastic, dummy walls; also with the walls' velocity along
 their normal only, from the dummies' centre or their own normals, with a floor of
 a friction of its own, with the predictor extrapolated, and with the grains' sums in
 single precision, also on a floor with a friction of its own), the jet collision
-(phase change), and what compute sph/stress/atom makes of the column's stress."""
+(phase change), what compute sph/stress/atom makes of the column's stress, and the
+pressure of the artificial viscosity that compute sph/visc/atom reports."""
 
 import os
 import tempfile
