@@ -141,9 +141,8 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     const Real fw = inside ? kernel.grad_factor_inside(q) : Real(0);
     const Real gwx = fw * rx, gwy = fw * ry, gwz = fw * rz;    // grad_i W
     const Real dvx = vxi - pj.v[0], dvy = vyi - pj.v[1], dvz = vzi - pj.v[2];
-    const Real pi_ij = monaghan_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, h, viscosity,
-                                          Real(0.5) * (c_i + pj.c), Real(0.5) * (rho_i + pj.rho));
-    const Real visc = grain || viscosity.walls ? pi_ij : Real(0);
+    const Real visc = pair_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, h, viscosity, c_i,
+                                     Real(pj.c), rho_i, Real(pj.rho), grain);
 
     // eq. 6b: the acceleration
     const Real inv_rho_ij = inv_rho_i * pj.inv_rho;
@@ -374,9 +373,8 @@ KOKKOS_INLINE_FUNCTION double viscous_pressure(const Particles &p, int i)
     const bool inside = (grain || dummy) && rsq < cutsq;
     const Real w = inside ? kernel.w_inside(kernel.q(rsq)) : Real(0);
     const Real dvx = vxi - pj.v[0], dvy = vyi - pj.v[1], dvz = vzi - pj.v[2];
-    const Real pi_ij = monaghan_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, h, viscosity,
-                                          Real(0.5) * (c_i + pj.c), Real(0.5) * (rho_i + pj.rho));
-    const Real visc = grain || viscosity.walls ? pi_ij : Real(0);
+    const Real visc = pair_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, h, viscosity, c_i,
+                                     Real(pj.c), rho_i, Real(pj.rho), grain);
     const Real volume = pj.mass * pj.inv_rho;
     w_sum += volume * w;
     visc_w += volume * w * (Real(0.5) * rho_i * pj.rho * visc);
@@ -453,9 +451,8 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
     const double fw = p.granular(j) && rsq < cutsq ? fw_in : 0.0;
     const double gwx = fw * rx, gwy = fw * ry, gwz = fw * rz;
     const double dvx = vxd - pj.v[0], dvy = vyd - pj.v[1], dvz = vzd - pj.v[2];
-    const double pi_dj = monaghan_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, kernel.h,
-                                            viscosity, 0.5 * (c_d + pj.c), 0.5 * (rho_d + pj.rho));
-    const double visc = viscosity.walls ? pi_dj : 0.0;
+    const double visc = pair_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, kernel.h, viscosity,
+                                       c_d, pj.c, rho_d, pj.rho, false);
     const double inv_rho_ij = inv_rho_d * pj.inv_rho;
     const double sxx = sxx_d + pj.sigma.xx, syy = syy_d + pj.sigma.yy, szz = szz_d + pj.sigma.zz;
     const double sxy = sxy_d + pj.sigma.xy, sxz = sxz_d + pj.sigma.xz, syz = syz_d + pj.sigma.yz;

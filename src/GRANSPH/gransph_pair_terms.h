@@ -97,6 +97,20 @@ KOKKOS_INLINE_FUNCTION Real monaghan_viscosity(Real vdotx, Real rsq, Real h, con
   return hv * (Real(visc.beta) * hv - Real(visc.alpha) * c_ij * d) / (d * d * rho_ij);
 }
 
+// Pi_ij between a particle and a neighbour from v_ij . x_ij, r^2, their sound speeds and
+// densities: Monaghan's term at the pair's mean c and rho, and none between a grain and
+// a dummy particle unless visc/walls (grain_pair: both are grains). The grains' rates,
+// the dummies' force and the viscous-pressure diagnostic take it from here alike.
+template <class Real>
+KOKKOS_INLINE_FUNCTION Real pair_viscosity(Real vdotx, Real rsq, Real h, const Viscosity &visc,
+                                           Real c_i, Real c_j, Real rho_i, Real rho_j,
+                                           bool grain_pair)
+{
+  const Real pi_ij = monaghan_viscosity(vdotx, rsq, h, visc, Real(0.5) * (c_i + c_j),
+                                        Real(0.5) * (rho_i + rho_j));
+  return grain_pair || visc.walls ? pi_ij : Real(0);
+}
+
 // Component a of eq. 6b's bracket applied to grad_i W, ((s_i + s_j)/(rho_i rho_j) -
 // Pi_ij I) grad_i W: the acceleration of i per unit mass of j, from row a of s_i + s_j
 // (s_ax, s_ay, s_az), 1/(rho_i rho_j), Pi_ij, grad_i W and its component g_a. The
