@@ -91,13 +91,17 @@ using HostParticles = HostParticlesOf<PairParticle>;
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
     Pair(lmp), h(0.0), visc{DEFAULT_ALPHA, DEFAULT_BETA, false, GRANSPH::Viscosity::BULK, 0.0},
     corrected_gradient(0), wall_normal(0), wall_stress_mode(GRANSPH::WallSums::RATIO),
-    mixed_precision(0), warned_far_from_origin(false), wall_hold_stick(0), integrator(nullptr),
+    mixed_precision(0), warned_far_from_origin(false), wall_hold_stick(0),
+    prune(DEFAULT_PRUNE), integrator(nullptr), pruned_nall(-1),
     viscous_pressure_step(-1), viscous_pressure_nlocal(0), nmax(0),
     particles(nullptr),
     particles_single(nullptr), normals(nullptr), friction(nullptr), slide(nullptr)
 {
   restartinfo = 1;
   single_enable = 0;
+  nextra = 1;    // how often the rows were pruned (prune)
+  memory->create(pvector, nextra, "pair:pvector");
+  pvector[0] = 0.0;
   no_virial_fdotr_compute = 1;    // forces go to owned atoms only: the pairs tally the virial
 }
 
@@ -108,6 +112,7 @@ PairSPHGranular::~PairSPHGranular()
   memory->sfree(normals);
   memory->sfree(friction);
   memory->sfree(slide);
+  memory->destroy(pvector);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -138,7 +143,7 @@ void PairSPHGranular::compute(int eflag, int vflag)
     if (limited) unnormalled = pack_wall_friction(friction, normals, nall);
   }
   if (limited && update->setupflag) stop_if_unnormalled(unnormalled);
-  const HostParticles p{particles,
+  const HostParticles listed{particles,
                         list->firstneigh,
                         list->numneigh,
                         atom->mask,
@@ -153,6 +158,7 @@ void PairSPHGranular::compute(int eflag, int vflag)
                         friction,
                         slide,
                         wall_stick(limited)};
+  const HostParticles p = prune > 0.0 ? pruned(listed, nall) : listed;
   if (update->setupflag) check_no_coincident(p);
   if (fix.wallbit) {
     walls(p, !limited);
@@ -169,6 +175,64 @@ void PairSPHGranular::compute(int eflag, int vflag)
     forward_comm_friction_slide();
     wall_forces(p);
   }
+}
+
+double PairSPHGranular::pruned_cutsq() const
+{
+  const double cut = (2.0 + prune) * h;
+  return cut * cut;
+}
+
+bool PairSPHGranular::prunes_anew(int nall, double farthest) const
+{
+  const double renew = 0.5 * prune * h;
+  return update->setupflag || neighbor->ago == 0 || nall != pruned_nall ||
+      farthest > renew * renew;
+}
+
+void PairSPHGranular::pruned_anew(int nall)
+{
+  pruned_nall = nall;
+  pvector[0] += 1.0;
+}
+
+// p over rows pruned from its rows (GRANSPH::prune_row), made anew where prunes_anew says
+template <class Particles> Particles PairSPHGranular::pruned(const Particles &p, int nall)
+{
+  double farthest = 0.0;
+  if (nall == pruned_nall) {
+    const double *x0 = pruned_x.data();
+    GRANSPH_SIMD_MAX(farthest)
+    for (int i = 0; i < nall; ++i) {
+      const double dx = particles[i].x[0] - x0[3 * i], dy = particles[i].x[1] - x0[3 * i + 1],
+                   dz = particles[i].x[2] - x0[3 * i + 2];
+      farthest = MAX(farthest, dx * dx + dy * dy + dz * dz);
+    }
+  }
+  if (prunes_anew(nall, farthest)) {
+    pruned_anew(nall);
+    pruned_x.resize(3 * nall);
+    for (int i = 0; i < nall; ++i)
+      for (int a = 0; a < 3; ++a) pruned_x[3 * i + a] = particles[i].x[a];
+    const int nlocal = atom->nlocal;
+    pruned_first.assign(nlocal, nullptr);
+    pruned_count.assign(nlocal, 0);
+    size_t room = 0;
+    for (int ii = 0; ii < list->inum; ++ii) room += p.num_neighbours(list->ilist[ii]);
+    if (pruned_index.size() < room) pruned_index.resize(room);
+    const double cutsq = pruned_cutsq();
+    int *row = pruned_index.data();
+    for (int ii = 0; ii < list->inum; ++ii) {
+      const int i = list->ilist[ii];
+      pruned_first[i] = row;
+      pruned_count[i] = GRANSPH::prune_row(p, i, cutsq, [row](int k) -> int & { return row[k]; });
+      row += p.num_neighbours(i);
+    }
+  }
+  Particles q = p;
+  q.firstneigh = pruned_first.data();
+  q.numneigh = pruned_count.data();
+  return q;
 }
 
 // at the setup of a run: no two interacting particles on one place
@@ -535,6 +599,8 @@ void PairSPHGranular::warn_if_far_from_single_origin()
      wall/friction/hold stress|stick  how those walls hold a grain below Coulomb's limit:
                               by their dummies' stress, or as a contact (WallStick)
      precision double|mixed   the grains' pair sums in double or single precision
+     prune margin             sum over the neighbours within (2 + margin) h, pruned from
+                              the list when an atom has moved margin h / 2 (0: the list's)
 ------------------------------------------------------------------------- */
 
 void PairSPHGranular::settings(int narg, char **arg)
@@ -556,6 +622,7 @@ void PairSPHGranular::settings(int narg, char **arg)
   };
   friction_walls.clear();
   wall_hold_stick = 0;
+  prune = DEFAULT_PRUNE;
   int iarg = 1;
   while (iarg < narg) {
     const std::string key = arg[iarg];
@@ -583,6 +650,14 @@ void PairSPHGranular::settings(int narg, char **arg)
       }
       friction_walls.push_back({igroup, mu});
       iarg += 3;
+      continue;
+    }
+    if (key == "prune") {
+      if (iarg + 2 > narg) error->all(FLERR, "Pair style sph/granular: prune needs a value");
+      prune = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (prune < 0.0)
+        error->all(FLERR, "Pair style sph/granular: prune must be >= 0, not {}", arg[iarg + 1]);
+      iarg += 2;
       continue;
     }
     if (key == "visc") {
@@ -719,14 +794,17 @@ void PairSPHGranular::read_restart(FILE *fp)
 
 // Files of the layout with the precision setting carry this mark before their choices,
 // where an older file has its first choice (0 or 1): so older files still read. Files
-// with the wall/friction/hold setting too carry the second mark.
-constexpr int RESTART_WITH_PRECISION = -20261204, RESTART_WITH_HOLD = -20261205;
+// with the wall/friction/hold setting too carry the second mark, and those with prune
+// after the walls the third.
+constexpr int RESTART_WITH_PRECISION = -20261204, RESTART_WITH_HOLD = -20261205,
+              RESTART_WITH_PRUNE = -20261206;
 
-// the settings as h, alpha, beta, then the mark and the choices as whole numbers
+// the settings as h, alpha, beta, then the mark and the choices as whole numbers, the
+// walls with a friction of their own, and prune
 void PairSPHGranular::write_restart_settings(FILE *fp)
 {
   const double values[3] = {h, visc.alpha, visc.beta};
-  const int choices[9] = {RESTART_WITH_HOLD,
+  const int choices[9] = {RESTART_WITH_PRUNE,
                           visc.sound,
                           visc.walls,
                           corrected_gradient,
@@ -741,18 +819,22 @@ void PairSPHGranular::write_restart_settings(FILE *fp)
     fwrite(&w.group, sizeof(int), 1, fp);
     fwrite(&w.mu, sizeof(double), 1, fp);
   }
+  fwrite(&prune, sizeof(double), 1, fp);
 }
 
 void PairSPHGranular::read_restart_settings(FILE *fp)
 {
   double values[3];
-  // a file without a mark: double precision; without the second: held by stress
+  // a file without a mark: double precision; without the second: held by stress; without
+  // the third: the default prune
   int choices[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  int first = 0;
   if (comm->me == 0) {
     utils::sfread(FLERR, values, sizeof(double), 3, fp, nullptr, error);
-    int first = 0;
     utils::sfread(FLERR, &first, sizeof(int), 1, fp, nullptr, error);
-    const int count = first == RESTART_WITH_HOLD ? 8 : first == RESTART_WITH_PRECISION ? 7 : 5;
+    const int count = first == RESTART_WITH_PRUNE || first == RESTART_WITH_HOLD ? 8
+        : first == RESTART_WITH_PRECISION                                      ? 7
+                                                                               : 5;
     if (count == 5) choices[0] = first;
     utils::sfread(FLERR, count == 5 ? choices + 1 : choices, sizeof(int), count, fp, nullptr,
                   error);
@@ -768,6 +850,10 @@ void PairSPHGranular::read_restart_settings(FILE *fp)
     MPI_Bcast(&w.group, 1, MPI_INT, 0, world);
     MPI_Bcast(&w.mu, 1, MPI_DOUBLE, 0, world);
   }
+  prune = DEFAULT_PRUNE;
+  if (comm->me == 0 && first == RESTART_WITH_PRUNE)
+    utils::sfread(FLERR, &prune, sizeof(double), 1, fp, nullptr, error);
+  MPI_Bcast(&prune, 1, MPI_DOUBLE, 0, world);
   h = values[0];
   visc.alpha = values[1];
   visc.beta = values[2];

@@ -69,10 +69,21 @@ class PairSPHGranular : public Pair {
   double friction_of(const FrictionWall &w) const;
   std::vector<FrictionWall> friction_walls;
   int wall_hold_stick;    // wall/friction/hold stick: those walls hold grains as contacts
+  // prune: the sums run over rows pruned from LAMMPS' list to the neighbours within
+  // (2 + prune) h, made again when an atom has moved prune h / 2 (0: LAMMPS' rows)
+  double prune;
   FixSPHIntegrate *integrator;
 
-  // defaults of visc, chosen by the convergence study (doc/pair_sph_granular.rst)
-  static constexpr double DEFAULT_ALPHA = 0.25, DEFAULT_BETA = 0.0;
+  // defaults of visc, chosen by the convergence study (doc/pair_sph_granular.rst), and of
+  // prune, by measurement (bench/README.md)
+  static constexpr double DEFAULT_ALPHA = 0.25, DEFAULT_BETA = 0.0, DEFAULT_PRUNE = 0.03;
+  double pruned_cutsq() const;
+  // whether this evaluation prunes the rows anew: at a run's setup, after a list build,
+  // for other atoms (nall), or when an atom has moved too far since (`farthest`, the
+  // square of the largest displacement since the last pruning)
+  bool prunes_anew(int nall, double farthest) const;
+  void pruned_anew(int nall);    // counted in pvector[0], which compute pair reports
+  int pruned_nall;    // the atoms, owned and ghost, of the last pruning (-1: none)
 
   void allocate();
   GRANSPH::WallStick wall_stick(bool limited) const;
@@ -105,6 +116,11 @@ class PairSPHGranular : public Pair {
   double *friction;   // with wall/friction: pack_wall_friction()
   double *slide;      // with wall/friction: 4 per atom, a grain's share and slide direction
   std::vector<double> visc_pressure;    // owned atoms: viscous_pressure()
+  // with prune: owned atoms' rows (pruned_first, pruned_count) in pruned_index, made from
+  // the positions pruned_x (owned and ghost atoms, 3 each)
+  std::vector<int> pruned_index, pruned_count;
+  std::vector<int *> pruned_first;
+  std::vector<double> pruned_x;
 
   void grow(int n);
   void pack_particles(int from, int to);
@@ -114,6 +130,7 @@ class PairSPHGranular : public Pair {
   template <class Particles> void wall_forces(const Particles &p);
   template <class Particles> void add_wall_force(const Particles &p, int d, bool has_grains);
   template <class Particles> void grains(const Particles &p);
+  template <class Particles> Particles pruned(const Particles &p, int nall);
   template <class Particles> void viscous_pressures(const Particles &p);
 };
 

@@ -170,6 +170,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
     p.friction_slide = k_slide.template view<DeviceType>();
   }
 
+  if (prune > 0.0) prune_rows(p, nall);
   if (update->setupflag) {    // no two interacting particles on one place
     auto ilist = k_list->d_ilist;
     int found = -1;
@@ -406,6 +407,56 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::pack_particl
         const double o[3] = {ox, oy, oz};
         single(i) = GRANSPH::PairParticleSingle::of(particles(i), o);
       });
+}
+
+// p over rows pruned from its rows (GRANSPH::prune_row), made anew where prunes_anew says
+template <class DeviceType>
+void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &p, int nall)
+{
+  auto particles = d_particles;
+  auto x0 = d_pruned_x;
+  double farthest = 0.0;
+  if (nall == pruned_nall)
+    Kokkos::parallel_reduce(
+        Kokkos::RangePolicy<DeviceType>(0, nall),
+        LAMMPS_LAMBDA(const int i, double &most) {
+          double rsq = 0.0;
+          for (int a = 0; a < 3; ++a)
+            rsq += (particles(i).x[a] - x0(i, a)) * (particles(i).x[a] - x0(i, a));
+          if (rsq > most) most = rsq;
+        },
+        Kokkos::Max<double>(farthest));
+  if (prunes_anew(nall, farthest)) {
+    auto k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
+    if ((int) d_pruned_x.extent(0) < nall)
+      d_pruned_x = decltype(d_pruned_x)(
+          Kokkos::view_alloc(Kokkos::WithoutInitializing, "pair:pruned_x"), atom->nmax);
+    if (d_pruned.extent(0) != k_list->d_neighbors.extent(0) ||
+        d_pruned.extent(1) != k_list->d_neighbors.extent(1))
+      d_pruned = decltype(d_pruned)(Kokkos::view_alloc(Kokkos::WithoutInitializing, "pair:pruned"),
+                                    k_list->d_neighbors.extent(0), k_list->d_neighbors.extent(1));
+    if (d_pruned_count.extent(0) < k_list->d_neighbors.extent(0))
+      d_pruned_count = decltype(d_pruned_count)("pair:pruned_count", k_list->d_neighbors.extent(0));
+    pruned_anew(nall);
+    x0 = d_pruned_x;
+    Kokkos::parallel_for(
+        Kokkos::RangePolicy<DeviceType>(0, nall), LAMMPS_LAMBDA(const int i) {
+          for (int a = 0; a < 3; ++a) x0(i, a) = particles(i).x[a];
+        });
+    auto ilist = k_list->d_ilist;
+    auto rows = d_pruned;
+    auto count = d_pruned_count;
+    const double cutsq = pruned_cutsq();
+    const DeviceParticles<DeviceType> listed = p;
+    Kokkos::parallel_for(
+        ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
+        LAMMPS_LAMBDA(const int ii) {
+          const int i = ilist(ii);
+          count(i) = GRANSPH::prune_row(listed, i, cutsq, Kokkos::subview(rows, i, Kokkos::ALL));
+        });
+  }
+  p.neighbors = d_pruned;
+  p.numneigh = d_pruned_count;
 }
 
 // rates of the granular particles (eqs. 6, 7, 34, 35)

@@ -50,6 +50,7 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   // Particles: DeviceParticles<DeviceType> or, under precision mixed, over PairParticleSingle
   template <class Particles> void grains(const Particles &p, SPHStateKokkos &kk);
   template <class Particles> void viscous_pressures(const Particles &p);
+  void prune_rows(DeviceParticles<DeviceType> &p, int nall);
 
  private:
   GRANSPHCompat::tdual_virial k_vatom;
@@ -64,6 +65,11 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   Kokkos::DualView<double *, DeviceType> k_slide;
   // owned atoms: viscous_pressure()
   Kokkos::DualView<double *, DeviceType> k_visc_pressure;
+  // with prune: the owned atoms' pruned rows, made from the positions pruned_x of the
+  // owned and ghost atoms
+  typename AT::t_neighbors_2d d_pruned;
+  typename AT::t_int_1d d_pruned_count;
+  Kokkos::View<double *[3], DeviceType> d_pruned_x;
 
   int update_wall_normals(int nall, bool limited);
   auto dummy_forces(SPHStateKokkos &kk);
