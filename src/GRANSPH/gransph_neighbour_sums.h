@@ -78,22 +78,23 @@ KOKKOS_INLINE_FUNCTION bool has_coincident_neighbour(const Particles &p, int i)
 // The neighbours of particle i that enter its sums (a grain's grains and dummies, a
 // dummy's grains) closer than sqrt(cutsq), written to out(0), out(1), ...; their number.
 // The pair style's pruned rows (its keyword `prune`): the sums' lanes then carry no
-// neighbour that would add zeros. Without branches, so that on a GPU the warp stays
-// together; out(m) takes every neighbour and keeps those that count.
-template <class Particles, class Row>
-KOKKOS_INLINE_FUNCTION int prune_row(const Particles &p, int i, double cutsq, const Row &out)
+// neighbour that would add zeros. x(j, a) are the positions, a dense copy (the particles'
+// records are four times longer, and the loop waits on their loads). Without branches,
+// so that on a GPU the warp stays together; out(m) takes every neighbour and keeps those
+// that count.
+template <class Particles, class Positions, class Row>
+KOKKOS_INLINE_FUNCTION int prune_row(const Particles &p, int i, const Positions &x,
+                                     double cutsq, const Row &out)
 {
   const bool i_granular = p.granular(i);
   if (!i_granular && !p.wall(i)) return 0;
-  const PairParticle &pi = p.particle(i);
-  const double xi = pi.x[0], yi = pi.x[1], zi = pi.x[2];
+  const double xi = x(i, 0), yi = x(i, 1), zi = x(i, 2);
   const int n = p.num_neighbours(i);
   const auto neighbours = p.neighbours(i);
   int m = 0;
   for (int k = 0; k < n; ++k) {
     const int j = neighbours(k);
-    const PairParticle &pj = p.particle(j);
-    const double rx = xi - pj.x[0], ry = yi - pj.x[1], rz = zi - pj.x[2];
+    const double rx = xi - x(j, 0), ry = yi - x(j, 1), rz = zi - x(j, 2);
     const bool enters = p.granular(j) || (i_granular && p.wall(j));
     out(m) = j;
     m += enters && rx * rx + ry * ry + rz * rz < cutsq;

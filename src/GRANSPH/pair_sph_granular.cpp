@@ -221,11 +221,14 @@ template <class Particles> Particles PairSPHGranular::pruned(const Particles &p,
     for (int ii = 0; ii < list->inum; ++ii) room += p.num_neighbours(list->ilist[ii]);
     if (pruned_index.size() < room) pruned_index.resize(room);
     const double cutsq = pruned_cutsq();
+    const double *x = pruned_x.data();
+    const auto position = [x](int j, int a) { return x[3 * j + a]; };
     int *row = pruned_index.data();
     for (int ii = 0; ii < list->inum; ++ii) {
       const int i = list->ilist[ii];
       pruned_first[i] = row;
-      pruned_count[i] = GRANSPH::prune_row(p, i, cutsq, [row](int k) -> int & { return row[k]; });
+      pruned_count[i] =
+          GRANSPH::prune_row(p, i, position, cutsq, [row](int k) -> int & { return row[k]; });
       row += p.num_neighbours(i);
     }
   }

@@ -452,7 +452,8 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
         ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
         LAMMPS_LAMBDA(const int ii) {
           const int i = ilist(ii);
-          count(i) = GRANSPH::prune_row(listed, i, cutsq, Kokkos::subview(rows, i, Kokkos::ALL));
+          count(i) =
+              GRANSPH::prune_row(listed, i, x0, cutsq, Kokkos::subview(rows, i, Kokkos::ALL));
         });
   }
   p.neighbors = d_pruned;
