@@ -102,6 +102,14 @@ KOKKOS_INLINE_FUNCTION int prune_row(const Particles &p, int i, const Positions 
   return m;
 }
 
+// How far particle i, at x, has moved since its row was pruned at x0(i, .): squared.
+template <class Positions>
+KOKKOS_INLINE_FUNCTION double pruned_displacement_sq(const double *x, const Positions &x0, int i)
+{
+  const double dx = x[0] - x0(i, 0), dy = x[1] - x0(i, 1), dz = x[2] - x0(i, 2);
+  return dx * dx + dy * dy + dz * dz;
+}
+
 // Rates of granular particle i (eqs. 6, 7, 34, 35) over its grain and dummy neighbours.
 // With WALL_NORMAL a dummy with its own normal n enters drho and grad_v through
 // (n . grad_i W) n; one without, through WallVelocitySums (the normal from the dummies'

@@ -183,11 +183,15 @@ double PairSPHGranular::pruned_cutsq() const
   return cut * cut;
 }
 
-bool PairSPHGranular::prunes_anew(int nall, double farthest) const
+bool PairSPHGranular::rows_outdated(int nall) const
+{
+  return update->setupflag || neighbor->ago == 0 || nall != pruned_nall;
+}
+
+double PairSPHGranular::prune_renewal_sq() const
 {
   const double renew = 0.5 * prune * h;
-  return update->setupflag || neighbor->ago == 0 || nall != pruned_nall ||
-      farthest > renew * renew;
+  return renew * renew;
 }
 
 void PairSPHGranular::pruned_anew(int nall)
@@ -196,20 +200,21 @@ void PairSPHGranular::pruned_anew(int nall)
   pvector[0] += 1.0;
 }
 
-// p over rows pruned from its rows (GRANSPH::prune_row), made anew where prunes_anew says
+// p over rows pruned from its rows (GRANSPH::prune_row), made anew when outdated or when
+// an atom has moved too far
 template <class Particles> Particles PairSPHGranular::pruned(const Particles &p, int nall)
 {
-  double farthest = 0.0;
-  if (nall == pruned_nall) {
-    const double *x0 = pruned_x.data();
+  const double *x0 = pruned_x.data();
+  const auto pruned_at = [x0](int j, int a) { return x0[3 * j + a]; };
+  bool anew = rows_outdated(nall);
+  if (!anew) {
+    double farthest = 0.0;
     GRANSPH_SIMD_MAX(farthest)
-    for (int i = 0; i < nall; ++i) {
-      const double dx = particles[i].x[0] - x0[3 * i], dy = particles[i].x[1] - x0[3 * i + 1],
-                   dz = particles[i].x[2] - x0[3 * i + 2];
-      farthest = MAX(farthest, dx * dx + dy * dy + dz * dz);
-    }
+    for (int i = 0; i < nall; ++i)
+      farthest = MAX(farthest, GRANSPH::pruned_displacement_sq(particles[i].x, pruned_at, i));
+    anew = farthest > prune_renewal_sq();
   }
-  if (prunes_anew(nall, farthest)) {
+  if (anew) {
     pruned_anew(nall);
     pruned_x.resize(3 * nall);
     for (int i = 0; i < nall; ++i)

@@ -78,10 +78,10 @@ class PairSPHGranular : public Pair {
   // prune, by measurement (bench/README.md)
   static constexpr double DEFAULT_ALPHA = 0.25, DEFAULT_BETA = 0.0, DEFAULT_PRUNE = 0.03;
   double pruned_cutsq() const;
-  // whether this evaluation prunes the rows anew: at a run's setup, after a list build,
-  // for other atoms (nall), or when an atom has moved too far since (`farthest`, the
-  // square of the largest displacement since the last pruning)
-  bool prunes_anew(int nall, double farthest) const;
+  // the rows are made anew at a run's setup, after a list build and for other atoms
+  // (nall); else when an atom has moved farther than sqrt(prune_renewal_sq()) since
+  bool rows_outdated(int nall) const;
+  double prune_renewal_sq() const;
   void pruned_anew(int nall);    // counted in pvector[0], which compute pair reports
   int pruned_nall;    // the atoms, owned and ghost, of the last pruning (-1: none)
 

@@ -409,24 +409,26 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::pack_particl
       });
 }
 
-// p over rows pruned from its rows (GRANSPH::prune_row), made anew where prunes_anew says
+// p over rows pruned from its rows (GRANSPH::prune_row), made anew when outdated or when
+// an atom has moved too far
 template <class DeviceType>
 void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &p, int nall)
 {
   auto particles = d_particles;
   auto x0 = d_pruned_x;
-  double farthest = 0.0;
-  if (nall == pruned_nall)
+  bool anew = rows_outdated(nall);
+  if (!anew) {
+    double farthest = 0.0;
     Kokkos::parallel_reduce(
         Kokkos::RangePolicy<DeviceType>(0, nall),
         LAMMPS_LAMBDA(const int i, double &most) {
-          double rsq = 0.0;
-          for (int a = 0; a < 3; ++a)
-            rsq += (particles(i).x[a] - x0(i, a)) * (particles(i).x[a] - x0(i, a));
+          const double rsq = GRANSPH::pruned_displacement_sq(particles(i).x, x0, i);
           if (rsq > most) most = rsq;
         },
         Kokkos::Max<double>(farthest));
-  if (prunes_anew(nall, farthest)) {
+    anew = farthest > prune_renewal_sq();
+  }
+  if (anew) {
     auto k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
     if ((int) d_pruned_x.extent(0) < nall)
       d_pruned_x = decltype(d_pruned_x)(
