@@ -102,11 +102,14 @@ KOKKOS_INLINE_FUNCTION int prune_row(const Particles &p, int i, const Positions 
   return m;
 }
 
-// How far particle i, at x, has moved since its row was pruned at x0(i, .): squared.
-template <class Positions>
-KOKKOS_INLINE_FUNCTION double pruned_displacement_sq(const double *x, const Positions &x0, int i)
+// How far particle i, now at x(i, .), has moved since its row was pruned at x0(i, .):
+// squared. Both dense copies (x LAMMPS' own), so that the pass over all atoms reads 48
+// bytes of each.
+template <class Positions, class PrunedPositions>
+KOKKOS_INLINE_FUNCTION double pruned_displacement_sq(const Positions &x, const PrunedPositions &x0,
+                                                     int i)
 {
-  const double dx = x[0] - x0(i, 0), dy = x[1] - x0(i, 1), dz = x[2] - x0(i, 2);
+  const double dx = x(i, 0) - x0(i, 0), dy = x(i, 1) - x0(i, 1), dz = x(i, 2) - x0(i, 2);
   return dx * dx + dy * dy + dz * dz;
 }
 

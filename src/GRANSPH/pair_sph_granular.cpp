@@ -204,21 +204,21 @@ void PairSPHGranular::pruned_anew(int nall)
 // an atom has moved too far
 template <class Particles> Particles PairSPHGranular::pruned(const Particles &p, int nall)
 {
-  const double *x0 = pruned_x.data();
-  const auto pruned_at = [x0](int j, int a) { return x0[3 * j + a]; };
+  const double *x = nall > 0 ? atom->x[0] : nullptr;    // one block of 3 nmax
+  const auto now_at = [x](int j, int a) { return x[3 * j + a]; };
   bool anew = rows_outdated(nall);
   if (!anew) {
+    const double *x0 = pruned_x.data();
+    const auto pruned_at = [x0](int j, int a) { return x0[3 * j + a]; };
     double farthest = 0.0;
     GRANSPH_SIMD_MAX(farthest)
     for (int i = 0; i < nall; ++i)
-      farthest = MAX(farthest, GRANSPH::pruned_displacement_sq(particles[i].x, pruned_at, i));
+      farthest = MAX(farthest, GRANSPH::pruned_displacement_sq(now_at, pruned_at, i));
     anew = farthest > prune_renewal_sq();
   }
   if (anew) {
     pruned_anew(nall);
-    pruned_x.resize(3 * nall);
-    for (int i = 0; i < nall; ++i)
-      for (int a = 0; a < 3; ++a) pruned_x[3 * i + a] = particles[i].x[a];
+    pruned_x.assign(x, x + 3 * nall);
     const int nlocal = atom->nlocal;
     pruned_first.assign(nlocal, nullptr);
     pruned_count.assign(nlocal, 0);
@@ -226,14 +226,12 @@ template <class Particles> Particles PairSPHGranular::pruned(const Particles &p,
     for (int ii = 0; ii < list->inum; ++ii) room += p.num_neighbours(list->ilist[ii]);
     if (pruned_index.size() < room) pruned_index.resize(room);
     const double cutsq = pruned_cutsq();
-    const double *x = pruned_x.data();
-    const auto position = [x](int j, int a) { return x[3 * j + a]; };
     int *row = pruned_index.data();
     for (int ii = 0; ii < list->inum; ++ii) {
       const int i = list->ilist[ii];
       pruned_first[i] = row;
       pruned_count[i] =
-          GRANSPH::prune_row(p, i, position, cutsq, [row](int k) -> int & { return row[k]; });
+          GRANSPH::prune_row(p, i, now_at, cutsq, [row](int k) -> int & { return row[k]; });
       row += p.num_neighbours(i);
     }
   }

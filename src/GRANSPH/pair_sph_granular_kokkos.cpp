@@ -414,7 +414,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::pack_particl
 template <class DeviceType>
 void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &p, int nall)
 {
-  auto particles = d_particles;
+  auto x = atomKK->k_x.template view<DeviceType>();
   auto x0 = d_pruned_x;
   bool anew = rows_outdated(nall);
   if (!anew) {
@@ -422,7 +422,7 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
     Kokkos::parallel_reduce(
         Kokkos::RangePolicy<DeviceType>(0, nall),
         LAMMPS_LAMBDA(const int i, double &most) {
-          const double rsq = GRANSPH::pruned_displacement_sq(particles(i).x, x0, i);
+          const double rsq = GRANSPH::pruned_displacement_sq(x, x0, i);
           if (rsq > most) most = rsq;
         },
         Kokkos::Max<double>(farthest));
@@ -443,7 +443,7 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
     x0 = d_pruned_x;
     Kokkos::parallel_for(
         Kokkos::RangePolicy<DeviceType>(0, nall), LAMMPS_LAMBDA(const int i) {
-          for (int a = 0; a < 3; ++a) x0(i, a) = particles(i).x[a];
+          for (int a = 0; a < 3; ++a) x0(i, a) = x(i, a);
         });
     auto ilist = k_list->d_ilist;
     auto rows = d_pruned;
