@@ -20,7 +20,8 @@ Cases (the examples' own inputs, for a fixed number of steps):
 spacing, 1.2e5; the jet 1.1e5).
 --repeat N: the best of N runs of each (default 3; a shared machine's noise only
 ever slows a run down). Every run of one size goes round in turn, so that a slow
-phase of the machine falls on all of them.
+phase of the machine falls on all of them; each ratio is printed of the best values
+and, beside it, as the median (and range) of the same ratio within each round.
 --steps N: every run this many steps instead of each case's own (a smoke run: ctest
 Bench:smoke runs the script so, that it cannot rot; its figures mean nothing).
 --against REF: builds the plugin of git commit REF into bench/against/SHA/ (against
@@ -42,6 +43,7 @@ the instruction set's: e.g. --against HEAD --against-arch generic.
 import argparse
 import os
 import re
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -189,21 +191,30 @@ def rate(rates, name):
 
 
 def best_of(runs, measure, repeat, index):
-    """every run measured `repeat` times, in turn; the rounds and each run's largest value
-    `index` of what `measure(run)` returns"""
+    """every run measured `repeat` times, in turn; the rounds, each run's largest value
+    `index` of what `measure(run)` returns, and that value of every run in each round"""
     rounds = [[measure(run) for run in runs] for _ in range(repeat)]
-    return rounds, {run.name: max(r[index] for r in results) for run, results in zip(runs, zip(*rounds))}
+    best = {run.name: max(r[index] for r in results) for run, results in zip(runs, zip(*rounds))}
+    in_rounds = [{run.name: result[index] for run, result in zip(runs, results)}
+                 for results in rounds]
+    return rounds, best, in_rounds
 
 
-def print_ratios(best, width):
+def print_ratios(best, in_rounds, width):
+    """each ratio of the best values, and beside it the same ratio taken within each round
+    (median, lowest-highest): a round runs its configurations one after the other, so a
+    slow phase of the machine that lasts minutes falls on both sides of its ratios, where
+    the best values may come from different phases"""
     for label, num, den in ratios_of(set(best)):
-        print(f"  {label:20s} {rate(best, num) / rate(best, den):{width}.2f}")
+        paired = sorted(rate(r, num) / rate(r, den) for r in in_rounds)
+        print(f"  {label:20s} {rate(best, num) / rate(best, den):{width}.2f}"
+              f"   in rounds {statistics.median(paired):.2f} ({paired[0]:.2f}-{paired[-1]:.2f})")
     sys.stdout.flush()
 
 
 def bench(case, label, variables, steps, repeat, against):
     runs = runs_of(case, against)
-    rounds, best = best_of(runs, lambda run: run.once(variables, steps), repeat, 2)
+    rounds, best, in_rounds = best_of(runs, lambda run: run.once(variables, steps), repeat, 2)
     atoms = {r[0] for results in rounds for r in results}
     if len(atoms) != 1:
         sys.exit(f"{case} {label}: the runs have different particle counts: {sorted(atoms)}")
@@ -215,7 +226,7 @@ def bench(case, label, variables, steps, repeat, against):
     for run in runs:
         # the peer's grains: its sand group, as ours
         print(f"  {run.name:20s} {best[run.name]:17.3e} {best[run.name] * grains / natoms:14.3e}")
-    print_ratios(best, 17)
+    print_ratios(best, in_rounds, 17)
 
 
 def flow(case, tend, repeat, against):
@@ -225,13 +236,13 @@ def flow(case, tend, repeat, against):
     # the two-core configurations of GRANSPH (the peer fluid has no flow to time)
     runs = [run for run in runs_of(case, against)
             if (run.ranks == 2 or run.flags) and run.script != PEER]
-    rounds, best = best_of(runs, lambda run: run.flow(variables), repeat, 1)
+    rounds, best, in_rounds = best_of(runs, lambda run: run.flow(variables), repeat, 1)
     steps = {run.name: result[0] for run, result in zip(runs, rounds[0])}
     print(f"\n{case} flow to t = {variables[end]} s ({variables}), best of {repeat}")
     print(f"  {'configuration':20s} {'steps':>8s} {'simulated s per s':>18s}")
     for run in runs:
         print(f"  {run.name:20s} {steps[run.name]:8d} {best[run.name]:18.3e}")
-    print_ratios(best, 27)
+    print_ratios(best, in_rounds, 27)
 
 
 def main():
