@@ -7,7 +7,9 @@
 # where the source rounds twice, so results would move in their last digits with the
 # instruction set; with it, the force-style YAML reference of the paper's settings
 # (PairStyle:sph_granular_paper, 5e-13) failed after its run. Measured, contraction gained
-# nothing (bench/README.md).
+# nothing (bench/README.md). The fused multiply-adds that the source writes stay: the
+# host's lanes (src/GRANSPH/gransph_lanes.h, native builds on CPUs with AVX2 and FMA) add
+# the grains' sums so, and the references hold.
 # A build for another GRANSPH_ARCH is a build of its own (the LAMMPS stamps hash the
 # flags, ccache keys on them).
 gransph_arch() {

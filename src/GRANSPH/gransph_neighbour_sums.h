@@ -41,8 +41,13 @@
 #define LMP_GRANSPH_NEIGHBOUR_SUMS_H
 
 #include "gransph_kernel.h"
+#include "gransph_lanes.h"
 #include "gransph_pair_terms.h"
 #include "gransph_simd.h"
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
 
 namespace GRANSPH {
 
@@ -359,12 +364,125 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
   return r;
 }
 
+// The particle records of accessor Particles: PairParticle, or PairParticleSingle
+template <class Particles>
+using RecordOf =
+    typename std::decay<decltype(std::declval<Particles>().particle(0))>::type;
+
+#if GRANSPH_LANES
+// Whether the host sums granular_rates without options in lanes (gransph_lanes.h)
+template <class Particles>
+using RatesInLanes =
+    std::integral_constant<bool, !std::is_void<typename LanesOf<RecordOf<Particles>>::type>::value>;
+
+// granular_rates without options (no wall normal, shape, virial or wall friction) on the
+// host, Lanes::WIDTH neighbours at a time: their records loaded whole and transposed (the
+// loop above assembles its vectors field by field and lane by lane, a third of its
+// instructions), the pair terms the same functions' on Lanes, each sum added by a fused
+// multiply-add. The same sums in another order and rounding: they differ from the loop's in
+// the last digits. A row's last lanes take particle i itself, which adds zeros (r = 0 and
+// v_ij = 0 make grad W, Pi and every product zero).
+template <class Particles>
+inline ParticleRates granular_rates_without_options(const Particles &p, int i, std::true_type)
+{
+  using Lanes = typename LanesOf<RecordOf<Particles>>::type;
+  using Record = typename Lanes::Record;
+  constexpr int W = Lanes::WIDTH;
+  // the fields of a record, as load_transposed() hands them out
+  constexpr int X = 0, V = 3, RHO = 6, C = 7, SXX = 8, SYY = 9, SZZ = 10, SXY = 11, SXZ = 12,
+                SYZ = 13, MASS = 14, INV_RHO = 15;
+  static_assert(offsetof(Record, v) == V * sizeof(typename Lanes::Scalar) &&
+                    offsetof(Record, rho) == RHO * sizeof(typename Lanes::Scalar) &&
+                    offsetof(Record, c) == C * sizeof(typename Lanes::Scalar) &&
+                    offsetof(Record, sigma) == SXX * sizeof(typename Lanes::Scalar) &&
+                    offsetof(Record, mass) == MASS * sizeof(typename Lanes::Scalar) &&
+                    offsetof(Record, inv_rho) == INV_RHO * sizeof(typename Lanes::Scalar),
+                "the record's fields in the order the lanes take them");
+  const Record &pi = p.particle(i);
+  const Lanes xi = pi.x[0], yi = pi.x[1], zi = pi.x[2];
+  const Lanes vxi = pi.v[0], vyi = pi.v[1], vzi = pi.v[2];
+  const Lanes rho_i = pi.rho, c_i = pi.c, inv_rho_i = pi.inv_rho;
+  const Lanes sxx_i = pi.sigma.xx, syy_i = pi.sigma.yy, szz_i = pi.sigma.zz;
+  const Lanes sxy_i = pi.sigma.xy, sxz_i = pi.sigma.xz, syz_i = pi.sigma.yz;
+  const WendlandC2Of<Lanes> kernel = p.kernel.template in_precision<Lanes>();
+  const Viscosity viscosity = p.visc;
+  const Lanes cutsq = kernel.cutsq(), h = kernel.h;
+
+  Lanes drho = 0.0f, ax = 0.0f, ay = 0.0f, az = 0.0f;
+  Lanes lxx = 0.0f, lxy = 0.0f, lxz = 0.0f, lyx = 0.0f, lyy = 0.0f, lyz = 0.0f, lzx = 0.0f,
+        lzy = 0.0f, lzz = 0.0f;
+  const int n = p.num_neighbours(i);
+  const auto neighbours = p.neighbours(i);
+  for (int k = 0; k < n; k += W) {
+    const Record *records[W];
+    bool grain[W], role[W];
+    for (int l = 0; l < W; ++l) {
+      const int j = k + l < n ? neighbours(k + l) : i;
+      records[l] = &p.particle(j);
+      grain[l] = p.granular(j);
+      role[l] = grain[l] || p.wall(j);
+    }
+    Lanes f[16];
+    Lanes::load_transposed(records, f);
+    const Lanes rx = xi - f[X], ry = yi - f[X + 1], rz = zi - f[X + 2];
+    const Lanes rsq = rx * rx + ry * ry + rz * rz;
+    const auto inside = Lanes::where(role) & (rsq < cutsq);
+    const Lanes fw = zero_unless(inside, kernel.grad_factor_inside(kernel.q(rsq)));
+    const Lanes gwx = fw * rx, gwy = fw * ry, gwz = fw * rz;    // grad_i W
+    const Lanes dvx = vxi - f[V], dvy = vyi - f[V + 1], dvz = vzi - f[V + 2];
+    const Lanes visc = pair_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, h, viscosity, c_i,
+                                      f[C], rho_i, f[RHO], Lanes::where(grain));
+    // eq. 6b
+    const Lanes inv_rho_ij = inv_rho_i * f[INV_RHO];
+    const Lanes sxx = sxx_i + f[SXX], syy = syy_i + f[SYY], szz = szz_i + f[SZZ];
+    const Lanes sxy = sxy_i + f[SXY], sxz = sxz_i + f[SXZ], syz = syz_i + f[SYZ];
+    const Lanes tx = stress_gradient(sxx, sxy, sxz, inv_rho_ij, visc, gwx, gwy, gwz, gwx);
+    const Lanes ty = stress_gradient(sxy, syy, syz, inv_rho_ij, visc, gwx, gwy, gwz, gwy);
+    const Lanes tz = stress_gradient(sxz, syz, szz, inv_rho_ij, visc, gwx, gwy, gwz, gwz);
+    const Lanes m = f[MASS], minus_volume = -(m * f[INV_RHO]);
+    add_product(ax, m, tx);
+    add_product(ay, m, ty);
+    add_product(az, m, tz);
+    // eq. 6a and the velocity gradient, -dv (x) grad_i W weighted by the volume m/rho
+    add_product(drho, m, dvx * gwx + dvy * gwy + dvz * gwz);
+    const Lanes ux = minus_volume * dvx, uy = minus_volume * dvy, uz = minus_volume * dvz;
+    add_product(lxx, ux, gwx);
+    add_product(lxy, ux, gwy);
+    add_product(lxz, ux, gwz);
+    add_product(lyx, uy, gwx);
+    add_product(lyy, uy, gwy);
+    add_product(lyz, uy, gwz);
+    add_product(lzx, uz, gwx);
+    add_product(lzy, uz, gwy);
+    add_product(lzz, uz, gwz);
+  }
+  return {drho.sum(),
+          {ax.sum(), ay.sum(), az.sum()},
+          {{lxx.sum(), lxy.sum(), lxz.sum()},
+           {lyx.sum(), lyy.sum(), lyz.sum()},
+           {lzx.sum(), lzy.sum(), lzz.sum()}},
+          Sym3::zero()};
+}
+#else
+template <class Particles> using RatesInLanes = std::false_type;
+#endif
+
+// granular_rates without options, where the host has no lanes for p's records
+template <class Particles>
+KOKKOS_INLINE_FUNCTION ParticleRates granular_rates_without_options(const Particles &p, int i,
+                                                                    std::false_type)
+{
+  return granular_rates<false, false, false, false>(p, i, nullptr, nullptr);
+}
+
 // granular_rates with the options of p, the virial if vir is not null, and with
 // wall/friction the grain's share and slide direction if slide is not null
 template <bool WALL_NORMAL, bool SHAPE, class Particles>
 KOKKOS_INLINE_FUNCTION ParticleRates granular_rates_of(const Particles &p, int i, double *vir,
                                                        double *slide)
 {
+  if (!WALL_NORMAL && !SHAPE && !p.wall_friction && !vir)
+    return granular_rates_without_options(p, i, RatesInLanes<Particles>());
   if (p.wall_friction)
     return vir ? granular_rates<WALL_NORMAL, SHAPE, true, true>(p, i, vir, slide)
                : granular_rates<WALL_NORMAL, SHAPE, false, true>(p, i, vir, slide);

@@ -97,18 +97,29 @@ KOKKOS_INLINE_FUNCTION Real monaghan_viscosity(Real vdotx, Real rsq, Real h, con
   return hv * (Real(visc.beta) * hv - Real(visc.alpha) * c_ij * d) / (d * d * rho_ij);
 }
 
+// a where c holds, else 0
+KOKKOS_INLINE_FUNCTION double zero_unless(bool c, double a)
+{
+  return c ? a : 0.0;
+}
+KOKKOS_INLINE_FUNCTION float zero_unless(bool c, float a)
+{
+  return c ? a : 0.0f;
+}
+
 // Pi_ij between a particle and a neighbour from v_ij . x_ij, r^2, their sound speeds and
 // densities: Monaghan's term at the pair's mean c and rho, and none between a grain and
 // a dummy particle unless visc/walls (grain_pair: both are grains). The grains' rates,
 // the dummies' force and the viscous-pressure diagnostic take it from here alike.
-template <class Real>
+// (grain_pair: a bool, or a lane type's mask where the sums take several pairs at once)
+template <class Real, class Condition>
 KOKKOS_INLINE_FUNCTION Real pair_viscosity(Real vdotx, Real rsq, Real h, const Viscosity &visc,
                                            Real c_i, Real c_j, Real rho_i, Real rho_j,
-                                           bool grain_pair)
+                                           Condition grain_pair)
 {
   const Real pi_ij = monaghan_viscosity(vdotx, rsq, h, visc, Real(0.5) * (c_i + c_j),
                                         Real(0.5) * (rho_i + rho_j));
-  return grain_pair || visc.walls ? pi_ij : Real(0);
+  return visc.walls ? pi_ij : zero_unless(grain_pair, pi_ij);
 }
 
 // Component a of eq. 6b's bracket applied to grad_i W, ((s_i + s_j)/(rho_i rho_j) -
