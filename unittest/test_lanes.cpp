@@ -138,8 +138,8 @@ template <class Particles> void expect_lanes_match(const Particles &box, double 
 
 TEST(Lanes, TakeThePlainRatesOfBothRecords)
 {
-  EXPECT_TRUE(RatesInLanes<Box>::value);
-  EXPECT_TRUE(RatesInLanes<SingleBox>::value);
+  EXPECT_TRUE(SumsInLanes<Box>::value);
+  EXPECT_TRUE(SumsInLanes<SingleBox>::value);
 }
 
 TEST(Lanes, MatchTheGenericLoop)
@@ -161,6 +161,52 @@ TEST(Lanes, MatchTheGenericLoopInSinglePrecision)
   // differ by single precision's rounding, a few parts in 1e7 of the rates' scale
   const Box box(400, 2.5, 2.2, 4);
   expect_lanes_match(SingleBox(box), 2e-6);
+}
+
+TEST(Lanes, MatchTheGenericLoopInTheWallSums)
+{
+  // eq. 8's sums of every dummy over its grains, against the generic loop's
+  const Box box(400, 2.5, 2.2, 5);
+  double scale = 0.0, diff = 0.0;
+  int compared = 0;
+  for (int d = 0; d < int(box.particles.size()); ++d) {
+    if (!box.wall(d)) continue;
+    const WallSums a = wall_sums(box, d), b = wall_sums(box, d, std::false_type());
+    const double va[10] = {a.sigma_w.xx, a.sigma_w.yy, a.sigma_w.zz, a.sigma_w.xy, a.sigma_w.xz,
+                           a.sigma_w.yz, a.rho_r_w[0], a.rho_r_w[1], a.rho_r_w[2], a.w};
+    const double vb[10] = {b.sigma_w.xx, b.sigma_w.yy, b.sigma_w.zz, b.sigma_w.xy, b.sigma_w.xz,
+                           b.sigma_w.yz, b.rho_r_w[0], b.rho_r_w[1], b.rho_r_w[2], b.w};
+    for (int c = 0; c < 10; ++c) {
+      scale = std::max(scale, std::fabs(vb[c]));
+      diff = std::max(diff, std::fabs(va[c] - vb[c]));
+    }
+    compared += b.w > 0.0;
+  }
+  EXPECT_GT(compared, 50);
+  EXPECT_LE(diff, 1e-13 * scale) << "largest difference " << diff << " of sums up to " << scale;
+}
+
+TEST(Lanes, MatchTheGenericLoopInTheWallForce)
+{
+  // eq. 9's force of the grains on every dummy, with and without viscosity at the walls
+  for (bool walls : {false, true}) {
+    Box box(400, 2.5, 2.2, 6);
+    box.visc.walls = walls;
+    double scale = 0.0, diff = 0.0;
+    for (int d = 0; d < int(box.particles.size()); ++d) {
+      if (!box.wall(d)) continue;
+      double a[3], b[3];
+      wall_force(box, d, a, nullptr);
+      wall_force<false, false>(box, d, b, nullptr);
+      for (int c = 0; c < 3; ++c) {
+        scale = std::max(scale, std::fabs(b[c]));
+        diff = std::max(diff, std::fabs(a[c] - b[c]));
+      }
+    }
+    EXPECT_GT(scale, 0.0);
+    EXPECT_LE(diff, 1e-13 * scale) << "visc/walls " << walls << ": largest difference " << diff
+                                   << " of forces up to " << scale;
+  }
 }
 
 TEST(Lanes, LeaveOptionsToTheGenericLoop)

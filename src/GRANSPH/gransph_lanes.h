@@ -22,6 +22,7 @@
 
 #include "gransph_pair_terms.h"
 
+#include <cstddef>
 #include <immintrin.h>
 
 namespace GRANSPH {
@@ -52,6 +53,7 @@ struct Lanes4 {
   friend Lanes4 operator-(Lanes4 a) { return _mm256_xor_pd(a.v, _mm256_set1_pd(-0.0)); }
   friend Mask operator<(Lanes4 a, Lanes4 b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ)}; }
   friend Lanes4 zero_unless(Mask c, Lanes4 a) { return _mm256_and_pd(c.m, a.v); }
+  friend Lanes4 zero_unless(bool c, Lanes4 a) { return c ? a : Lanes4(0.0); }
   friend Lanes4 square_root(Lanes4 a) { return _mm256_sqrt_pd(a.v); }
   friend Lanes4 magnitude(Lanes4 a) { return _mm256_andnot_pd(_mm256_set1_pd(-0.0), a.v); }
   // acc + a b, rounded once
@@ -101,6 +103,7 @@ struct Lanes8f {
   friend Lanes8f operator-(Lanes8f a) { return _mm256_xor_ps(a.v, _mm256_set1_ps(-0.0f)); }
   friend Mask operator<(Lanes8f a, Lanes8f b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_LT_OQ)}; }
   friend Lanes8f zero_unless(Mask c, Lanes8f a) { return _mm256_and_ps(c.m, a.v); }
+  friend Lanes8f zero_unless(bool c, Lanes8f a) { return c ? a : Lanes8f(0.0f); }
   friend Lanes8f square_root(Lanes8f a) { return _mm256_sqrt_ps(a.v); }
   friend Lanes8f magnitude(Lanes8f a) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), a.v); }
   friend void add_product(Lanes8f &acc, Lanes8f a, Lanes8f b) { acc.v = _mm256_fmadd_ps(a.v, b.v, acc.v); }
@@ -140,6 +143,35 @@ struct Lanes8f {
     }
   }
 };
+
+// The fields of a particle record (PairParticle, PairParticleSingle) in the order
+// load_transposed() hands them out: its scalars in memory order.
+enum RecordField {
+  FIELD_X = 0,
+  FIELD_V = 3,
+  FIELD_RHO = 6,
+  FIELD_C = 7,
+  FIELD_SXX = 8,
+  FIELD_SYY,
+  FIELD_SZZ,
+  FIELD_SXY,
+  FIELD_SXZ,
+  FIELD_SYZ,
+  FIELD_MASS = 14,
+  FIELD_INV_RHO = 15
+};
+template <class Record, class Scalar> constexpr bool fields_in_order()
+{
+  return offsetof(Record, v) == FIELD_V * sizeof(Scalar) &&
+      offsetof(Record, rho) == FIELD_RHO * sizeof(Scalar) &&
+      offsetof(Record, c) == FIELD_C * sizeof(Scalar) &&
+      offsetof(Record, sigma) == FIELD_SXX * sizeof(Scalar) &&
+      offsetof(Record, mass) == FIELD_MASS * sizeof(Scalar) &&
+      offsetof(Record, inv_rho) == FIELD_INV_RHO * sizeof(Scalar);
+}
+static_assert(fields_in_order<PairParticle, double>() &&
+                  fields_in_order<PairParticleSingle, float>(),
+              "the particle records' fields in the order of RecordField");
 
 // the lane type for a particle record type (none: void)
 template <class Record> struct LanesOf {

@@ -45,7 +45,6 @@
 #include "gransph_pair_terms.h"
 #include "gransph_simd.h"
 
-#include <cstddef>
 #include <type_traits>
 #include <utility>
 
@@ -370,9 +369,10 @@ using RecordOf =
     typename std::decay<decltype(std::declval<Particles>().particle(0))>::type;
 
 #if GRANSPH_LANES
-// Whether the host sums granular_rates without options in lanes (gransph_lanes.h)
+// Whether the host takes granular_rates without options and wall_sums in lanes
+// (gransph_lanes.h)
 template <class Particles>
-using RatesInLanes =
+using SumsInLanes =
     std::integral_constant<bool, !std::is_void<typename LanesOf<RecordOf<Particles>>::type>::value>;
 
 // granular_rates without options (no wall normal, shape, virial or wall friction) on the
@@ -388,16 +388,9 @@ inline ParticleRates granular_rates_without_options(const Particles &p, int i, s
   using Lanes = typename LanesOf<RecordOf<Particles>>::type;
   using Record = typename Lanes::Record;
   constexpr int W = Lanes::WIDTH;
-  // the fields of a record, as load_transposed() hands them out
-  constexpr int X = 0, V = 3, RHO = 6, C = 7, SXX = 8, SYY = 9, SZZ = 10, SXY = 11, SXZ = 12,
-                SYZ = 13, MASS = 14, INV_RHO = 15;
-  static_assert(offsetof(Record, v) == V * sizeof(typename Lanes::Scalar) &&
-                    offsetof(Record, rho) == RHO * sizeof(typename Lanes::Scalar) &&
-                    offsetof(Record, c) == C * sizeof(typename Lanes::Scalar) &&
-                    offsetof(Record, sigma) == SXX * sizeof(typename Lanes::Scalar) &&
-                    offsetof(Record, mass) == MASS * sizeof(typename Lanes::Scalar) &&
-                    offsetof(Record, inv_rho) == INV_RHO * sizeof(typename Lanes::Scalar),
-                "the record's fields in the order the lanes take them");
+  constexpr int X = FIELD_X, V = FIELD_V, RHO = FIELD_RHO, C = FIELD_C, SXX = FIELD_SXX,
+                SYY = FIELD_SYY, SZZ = FIELD_SZZ, SXY = FIELD_SXY, SXZ = FIELD_SXZ,
+                SYZ = FIELD_SYZ, MASS = FIELD_MASS, INV_RHO = FIELD_INV_RHO;
   const Record &pi = p.particle(i);
   const Lanes xi = pi.x[0], yi = pi.x[1], zi = pi.x[2];
   const Lanes vxi = pi.v[0], vyi = pi.v[1], vzi = pi.v[2];
@@ -464,7 +457,7 @@ inline ParticleRates granular_rates_without_options(const Particles &p, int i, s
           Sym3::zero()};
 }
 #else
-template <class Particles> using RatesInLanes = std::false_type;
+template <class Particles> using SumsInLanes = std::false_type;
 #endif
 
 // granular_rates without options, where the host has no lanes for p's records
@@ -482,7 +475,7 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates_of(const Particles &p, int i
                                                        double *slide)
 {
   if (!WALL_NORMAL && !SHAPE && !p.wall_friction && !vir)
-    return granular_rates_without_options(p, i, RatesInLanes<Particles>());
+    return granular_rates_without_options(p, i, SumsInLanes<Particles>());
   if (p.wall_friction)
     return vir ? granular_rates<WALL_NORMAL, SHAPE, true, true>(p, i, vir, slide)
                : granular_rates<WALL_NORMAL, SHAPE, false, true>(p, i, vir, slide);
@@ -538,8 +531,9 @@ KOKKOS_INLINE_FUNCTION double viscous_pressure(const Particles &p, int i)
   return w_sum > 0 ? double(visc_w) / double(w_sum) : 0.0;
 }
 
-// The sums of eq. 8 for dummy particle d over its granular neighbours.
-template <class Particles> KOKKOS_INLINE_FUNCTION WallSums wall_sums(const Particles &p, int d)
+// The sums of eq. 8 for dummy particle d over its granular neighbours, in the generic loop.
+template <class Particles>
+KOKKOS_INLINE_FUNCTION WallSums wall_sums(const Particles &p, int d, std::false_type)
 {
   const PairParticle &pd = p.particle(d);
   const double xd = pd.x[0], yd = pd.x[1], zd = pd.x[2];
@@ -570,6 +564,61 @@ template <class Particles> KOKKOS_INLINE_FUNCTION WallSums wall_sums(const Parti
     w_sum += w;
   }
   return {{sxx, syy, szz, sxy, sxz, syz}, {rho_rx, rho_ry, rho_rz}, w_sum};
+}
+
+#if GRANSPH_LANES
+// wall_sums on the host, Lanes::WIDTH grains at a time (as granular_rates_without_options;
+// a row's last lanes take the dummy itself, which is no grain and adds zeros)
+template <class Particles> inline WallSums wall_sums(const Particles &p, int d, std::true_type)
+{
+  using Lanes = typename LanesOf<RecordOf<Particles>>::type;
+  using Record = typename Lanes::Record;
+  constexpr int W = Lanes::WIDTH;
+  const Record &pd = p.particle(d);
+  const Lanes xd = pd.x[0], yd = pd.x[1], zd = pd.x[2];
+  const WendlandC2Of<Lanes> kernel = p.kernel.template in_precision<Lanes>();
+  const Lanes cutsq = kernel.cutsq();
+  Lanes sxx = 0.0f, syy = 0.0f, szz = 0.0f, sxy = 0.0f, sxz = 0.0f, syz = 0.0f;
+  Lanes rho_rx = 0.0f, rho_ry = 0.0f, rho_rz = 0.0f, w_sum = 0.0f;
+  const int n = p.num_neighbours(d);
+  const auto neighbours = p.neighbours(d);
+  for (int k = 0; k < n; k += W) {
+    const Record *records[W];
+    bool grain[W];
+    for (int l = 0; l < W; ++l) {
+      const int j = k + l < n ? neighbours(k + l) : d;
+      records[l] = &p.particle(j);
+      grain[l] = p.granular(j);
+    }
+    Lanes f[16];
+    Lanes::load_transposed(records, f);
+    // r_dk = x_d - x_k
+    const Lanes rx = xd - f[FIELD_X], ry = yd - f[FIELD_X + 1], rz = zd - f[FIELD_X + 2];
+    const Lanes rsq = rx * rx + ry * ry + rz * rz;
+    const Lanes w =
+        zero_unless(Lanes::where(grain) & (rsq < cutsq), kernel.w_inside(kernel.q(rsq)));
+    add_product(sxx, w, f[FIELD_SXX]);
+    add_product(syy, w, f[FIELD_SYY]);
+    add_product(szz, w, f[FIELD_SZZ]);
+    add_product(sxy, w, f[FIELD_SXY]);
+    add_product(sxz, w, f[FIELD_SXZ]);
+    add_product(syz, w, f[FIELD_SYZ]);
+    add_product(rho_rx, f[FIELD_RHO] * rx, w);
+    add_product(rho_ry, f[FIELD_RHO] * ry, w);
+    add_product(rho_rz, f[FIELD_RHO] * rz, w);
+    w_sum = w_sum + w;
+  }
+  return {{sxx.sum(), syy.sum(), szz.sum(), sxy.sum(), sxz.sum(), syz.sum()},
+          {rho_rx.sum(), rho_ry.sum(), rho_rz.sum()},
+          w_sum.sum()};
+}
+#endif
+
+// The sums of eq. 8 for dummy particle d over its granular neighbours: in lanes where the
+// host has them
+template <class Particles> KOKKOS_INLINE_FUNCTION WallSums wall_sums(const Particles &p, int d)
+{
+  return wall_sums(p, d, SumsInLanes<Particles>());
 }
 
 // Force of the granular neighbours on dummy particle d (eq. 9), with its stress of eq. 8
@@ -648,6 +697,67 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
   }
 }
 
+// wall_force without options (no virial, no wall friction), in the generic loop
+template <class Particles>
+KOKKOS_INLINE_FUNCTION void wall_force_without_options(const Particles &p, int d, double *force,
+                                                       std::false_type)
+{
+  wall_force<false, false>(p, d, force, nullptr);
+}
+
+#if GRANSPH_LANES
+// wall_force without options on the host, Lanes::WIDTH grains at a time (as
+// granular_rates_without_options; a row's last lanes take the dummy itself, no grain)
+template <class Particles>
+inline void wall_force_without_options(const Particles &p, int d, double *force, std::true_type)
+{
+  using Lanes = typename LanesOf<RecordOf<Particles>>::type;
+  using Record = typename Lanes::Record;
+  constexpr int W = Lanes::WIDTH;
+  const Record &pd = p.particle(d);
+  const Lanes xd = pd.x[0], yd = pd.x[1], zd = pd.x[2];
+  const Lanes vxd = pd.v[0], vyd = pd.v[1], vzd = pd.v[2];
+  const Lanes rho_d = pd.rho, c_d = pd.c, inv_rho_d = pd.inv_rho, m_d = pd.mass;
+  const Lanes sxx_d = pd.sigma.xx, syy_d = pd.sigma.yy, szz_d = pd.sigma.zz;
+  const Lanes sxy_d = pd.sigma.xy, sxz_d = pd.sigma.xz, syz_d = pd.sigma.yz;
+  const WendlandC2Of<Lanes> kernel = p.kernel.template in_precision<Lanes>();
+  const Viscosity viscosity = p.visc;
+  const Lanes cutsq = kernel.cutsq(), h = kernel.h;
+  Lanes fx = 0.0f, fy = 0.0f, fz = 0.0f;
+  const int n = p.num_neighbours(d);
+  const auto neighbours = p.neighbours(d);
+  for (int k = 0; k < n; k += W) {
+    const Record *records[W];
+    bool grain[W];
+    for (int l = 0; l < W; ++l) {
+      const int j = k + l < n ? neighbours(k + l) : d;
+      records[l] = &p.particle(j);
+      grain[l] = p.granular(j);
+    }
+    Lanes f[16];
+    Lanes::load_transposed(records, f);
+    const Lanes rx = xd - f[FIELD_X], ry = yd - f[FIELD_X + 1], rz = zd - f[FIELD_X + 2];
+    const Lanes rsq = rx * rx + ry * ry + rz * rz;
+    const Lanes fw = zero_unless(Lanes::where(grain) & (rsq < cutsq),
+                                 kernel.grad_factor_inside(kernel.q(rsq)));
+    const Lanes gwx = fw * rx, gwy = fw * ry, gwz = fw * rz;
+    const Lanes dvx = vxd - f[FIELD_V], dvy = vyd - f[FIELD_V + 1], dvz = vzd - f[FIELD_V + 2];
+    const Lanes visc = pair_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, h, viscosity, c_d,
+                                      f[FIELD_C], rho_d, f[FIELD_RHO], false);
+    const Lanes inv_rho_ij = inv_rho_d * f[FIELD_INV_RHO];
+    const Lanes sxx = sxx_d + f[FIELD_SXX], syy = syy_d + f[FIELD_SYY], szz = szz_d + f[FIELD_SZZ];
+    const Lanes sxy = sxy_d + f[FIELD_SXY], sxz = sxz_d + f[FIELD_SXZ], syz = syz_d + f[FIELD_SYZ];
+    const Lanes mm = m_d * f[FIELD_MASS];
+    add_product(fx, mm, stress_gradient(sxx, sxy, sxz, inv_rho_ij, visc, gwx, gwy, gwz, gwx));
+    add_product(fy, mm, stress_gradient(sxy, syy, syz, inv_rho_ij, visc, gwx, gwy, gwz, gwy));
+    add_product(fz, mm, stress_gradient(sxz, syz, szz, inv_rho_ij, visc, gwx, gwy, gwz, gwz));
+  }
+  force[0] = fx.sum();
+  force[1] = fy.sum();
+  force[2] = fz.sum();
+}
+#endif
+
 // wall_force with the options of p, with the virial if vir is not null
 template <class Particles>
 KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force, double *vir)
@@ -660,7 +770,7 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
   } else if (vir)
     wall_force<true, false>(p, d, force, vir);
   else
-    wall_force<false, false>(p, d, force, vir);
+    wall_force_without_options(p, d, force, SumsInLanes<Particles>());
 }
 
 // The force of the grains on a dummy particle for this evaluation: fd as computed, kept in
