@@ -31,10 +31,12 @@ namespace GRANSPH {
 struct Mask4 {
   __m256d m;
   friend Mask4 operator&(Mask4 a, Mask4 b) { return {_mm256_and_pd(a.m, b.m)}; }
+  friend Mask4 operator|(Mask4 a, Mask4 b) { return {_mm256_or_pd(a.m, b.m)}; }
 };
 struct Mask8f {
   __m256 m;
   friend Mask8f operator&(Mask8f a, Mask8f b) { return {_mm256_and_ps(a.m, b.m)}; }
+  friend Mask8f operator|(Mask8f a, Mask8f b) { return {_mm256_or_ps(a.m, b.m)}; }
 };
 
 struct Lanes4 {

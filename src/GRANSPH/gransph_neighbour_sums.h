@@ -375,6 +375,27 @@ template <class Particles>
 using SumsInLanes =
     std::integral_constant<bool, !std::is_void<typename LanesOf<RecordOf<Particles>>::type>::value>;
 
+// Neighbours k, k + 1, ... (Lanes::WIDTH of them) of particle `self`'s row of n: their
+// records' fields in lanes (f[RecordField]) and their roles. Lanes past the row's end take
+// `self` itself.
+template <class Lanes> struct NeighbourBlock {
+  Lanes f[16];
+  bool grain[Lanes::WIDTH], wall[Lanes::WIDTH];
+
+  template <class Particles, class Row>
+  void load(const Particles &p, const Row &neighbours, int n, int k, int self)
+  {
+    const typename Lanes::Record *records[Lanes::WIDTH];
+    for (int l = 0; l < Lanes::WIDTH; ++l) {
+      const int j = k + l < n ? neighbours(k + l) : self;
+      records[l] = &p.particle(j);
+      grain[l] = p.granular(j);
+      wall[l] = p.wall(j);
+    }
+    Lanes::load_transposed(records, f);
+  }
+};
+
 // granular_rates without options (no wall normal, shape, virial or wall friction) on the
 // host, Lanes::WIDTH neighbours at a time: their records loaded whole and transposed (the
 // loop above assembles its vectors field by field and lane by lane, a third of its
@@ -387,7 +408,6 @@ inline ParticleRates granular_rates_without_options(const Particles &p, int i, s
 {
   using Lanes = typename LanesOf<RecordOf<Particles>>::type;
   using Record = typename Lanes::Record;
-  constexpr int W = Lanes::WIDTH;
   constexpr int X = FIELD_X, V = FIELD_V, RHO = FIELD_RHO, C = FIELD_C, SXX = FIELD_SXX,
                 SYY = FIELD_SYY, SZZ = FIELD_SZZ, SXY = FIELD_SXY, SXZ = FIELD_SXZ,
                 SYZ = FIELD_SYZ, MASS = FIELD_MASS, INV_RHO = FIELD_INV_RHO;
@@ -406,25 +426,19 @@ inline ParticleRates granular_rates_without_options(const Particles &p, int i, s
         lzy = 0.0f, lzz = 0.0f;
   const int n = p.num_neighbours(i);
   const auto neighbours = p.neighbours(i);
-  for (int k = 0; k < n; k += W) {
-    const Record *records[W];
-    bool grain[W], role[W];
-    for (int l = 0; l < W; ++l) {
-      const int j = k + l < n ? neighbours(k + l) : i;
-      records[l] = &p.particle(j);
-      grain[l] = p.granular(j);
-      role[l] = grain[l] || p.wall(j);
-    }
-    Lanes f[16];
-    Lanes::load_transposed(records, f);
+  NeighbourBlock<Lanes> block;
+  const Lanes *f = block.f;
+  for (int k = 0; k < n; k += Lanes::WIDTH) {
+    block.load(p, neighbours, n, k, i);
+    const auto grain = Lanes::where(block.grain);
     const Lanes rx = xi - f[X], ry = yi - f[X + 1], rz = zi - f[X + 2];
     const Lanes rsq = rx * rx + ry * ry + rz * rz;
-    const auto inside = Lanes::where(role) & (rsq < cutsq);
+    const auto inside = (grain | Lanes::where(block.wall)) & (rsq < cutsq);
     const Lanes fw = zero_unless(inside, kernel.grad_factor_inside(kernel.q(rsq)));
     const Lanes gwx = fw * rx, gwy = fw * ry, gwz = fw * rz;    // grad_i W
     const Lanes dvx = vxi - f[V], dvy = vyi - f[V + 1], dvz = vzi - f[V + 2];
     const Lanes visc = pair_viscosity(dvx * rx + dvy * ry + dvz * rz, rsq, h, viscosity, c_i,
-                                      f[C], rho_i, f[RHO], Lanes::where(grain));
+                                      f[C], rho_i, f[RHO], grain);
     // eq. 6b
     const Lanes inv_rho_ij = inv_rho_i * f[INV_RHO];
     const Lanes sxx = sxx_i + f[SXX], syy = syy_i + f[SYY], szz = szz_i + f[SZZ];
@@ -573,7 +587,6 @@ template <class Particles> inline WallSums wall_sums(const Particles &p, int d, 
 {
   using Lanes = typename LanesOf<RecordOf<Particles>>::type;
   using Record = typename Lanes::Record;
-  constexpr int W = Lanes::WIDTH;
   const Record &pd = p.particle(d);
   const Lanes xd = pd.x[0], yd = pd.x[1], zd = pd.x[2];
   const WendlandC2Of<Lanes> kernel = p.kernel.template in_precision<Lanes>();
@@ -582,21 +595,15 @@ template <class Particles> inline WallSums wall_sums(const Particles &p, int d, 
   Lanes rho_rx = 0.0f, rho_ry = 0.0f, rho_rz = 0.0f, w_sum = 0.0f;
   const int n = p.num_neighbours(d);
   const auto neighbours = p.neighbours(d);
-  for (int k = 0; k < n; k += W) {
-    const Record *records[W];
-    bool grain[W];
-    for (int l = 0; l < W; ++l) {
-      const int j = k + l < n ? neighbours(k + l) : d;
-      records[l] = &p.particle(j);
-      grain[l] = p.granular(j);
-    }
-    Lanes f[16];
-    Lanes::load_transposed(records, f);
+  NeighbourBlock<Lanes> block;
+  const Lanes *f = block.f;
+  for (int k = 0; k < n; k += Lanes::WIDTH) {
+    block.load(p, neighbours, n, k, d);
     // r_dk = x_d - x_k
     const Lanes rx = xd - f[FIELD_X], ry = yd - f[FIELD_X + 1], rz = zd - f[FIELD_X + 2];
     const Lanes rsq = rx * rx + ry * ry + rz * rz;
     const Lanes w =
-        zero_unless(Lanes::where(grain) & (rsq < cutsq), kernel.w_inside(kernel.q(rsq)));
+        zero_unless(Lanes::where(block.grain) & (rsq < cutsq), kernel.w_inside(kernel.q(rsq)));
     add_product(sxx, w, f[FIELD_SXX]);
     add_product(syy, w, f[FIELD_SYY]);
     add_product(szz, w, f[FIELD_SZZ]);
@@ -713,7 +720,6 @@ inline void wall_force_without_options(const Particles &p, int d, double *force,
 {
   using Lanes = typename LanesOf<RecordOf<Particles>>::type;
   using Record = typename Lanes::Record;
-  constexpr int W = Lanes::WIDTH;
   const Record &pd = p.particle(d);
   const Lanes xd = pd.x[0], yd = pd.x[1], zd = pd.x[2];
   const Lanes vxd = pd.v[0], vyd = pd.v[1], vzd = pd.v[2];
@@ -726,19 +732,13 @@ inline void wall_force_without_options(const Particles &p, int d, double *force,
   Lanes fx = 0.0f, fy = 0.0f, fz = 0.0f;
   const int n = p.num_neighbours(d);
   const auto neighbours = p.neighbours(d);
-  for (int k = 0; k < n; k += W) {
-    const Record *records[W];
-    bool grain[W];
-    for (int l = 0; l < W; ++l) {
-      const int j = k + l < n ? neighbours(k + l) : d;
-      records[l] = &p.particle(j);
-      grain[l] = p.granular(j);
-    }
-    Lanes f[16];
-    Lanes::load_transposed(records, f);
+  NeighbourBlock<Lanes> block;
+  const Lanes *f = block.f;
+  for (int k = 0; k < n; k += Lanes::WIDTH) {
+    block.load(p, neighbours, n, k, d);
     const Lanes rx = xd - f[FIELD_X], ry = yd - f[FIELD_X + 1], rz = zd - f[FIELD_X + 2];
     const Lanes rsq = rx * rx + ry * ry + rz * rz;
-    const Lanes fw = zero_unless(Lanes::where(grain) & (rsq < cutsq),
+    const Lanes fw = zero_unless(Lanes::where(block.grain) & (rsq < cutsq),
                                  kernel.grad_factor_inside(kernel.q(rsq)));
     const Lanes gwx = fw * rx, gwy = fw * ry, gwz = fw * rz;
     const Lanes dvx = vxd - f[FIELD_V], dvy = vyd - f[FIELD_V + 1], dvz = vzd - f[FIELD_V + 2];
