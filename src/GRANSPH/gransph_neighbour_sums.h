@@ -369,8 +369,8 @@ using RecordOf =
     typename std::decay<decltype(std::declval<Particles>().particle(0))>::type;
 
 #if GRANSPH_LANES
-// Whether the host takes granular_rates without options and wall_sums in lanes
-// (gransph_lanes.h)
+// Whether the host takes granular_rates and wall_force without options, and wall_sums,
+// in lanes (gransph_lanes.h)
 template <class Particles>
 using SumsInLanes =
     std::integral_constant<bool, !std::is_void<typename LanesOf<RecordOf<Particles>>::type>::value>;
