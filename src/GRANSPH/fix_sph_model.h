@@ -33,6 +33,11 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
   {
   }
 
+  void setup(int vflag) override
+  {
+    FixSPHIntegrate::setup(vflag);
+    grains_listed = false;    // atoms, groups and masses may have changed since the last run
+  }
   void initial_integrate(int) override { step(PREDICT); }
   void final_integrate() override
   {
@@ -70,18 +75,10 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
   template <class Chunks> int step_grains(Stage stage, double **x, double **v, double **f,
                                           Chunks chunks)
   {
-    // atoms are exchanged, sorted, created and deleted only when a step reneighbours,
-    // between its predictor and its corrector
-    if (stage == PREDICT || neighbor->ago == 0) list_grains();
+    // within a run, atoms are exchanged, sorted, created and deleted only when a step
+    // reneighbours, between its predictor and its corrector
+    if (!grains_listed || (stage == CORRECT && neighbor->ago == 0)) list_grains();
     if (grains.empty()) return 0;
-    // a grain without a step predicts with the acceleration of the setup evaluation
-    if (stage == PREDICT)
-      for (size_t k = 0; k < grains.size(); ++k) {
-        const int i = grains[k];
-        if (start[i][STEPPED] != 0.0) continue;
-        const double ftm = force->ftm2v / grain_mass[k];
-        for (int a = 0; a < 3; ++a) rates[i][ACC + a] = ftm * f[i][a];
-      }
     const GrainArrays a{x[0],    v[0],          f[0], state[0],          rates[0],
                         start[0], nrates,       (int) grains.size(), grains.data(),
                         grain_mass.data(), update->dt, force->ftm2v};
@@ -103,9 +100,11 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
   // the owned atoms of the group and their masses, for the step's loop
   std::vector<int> grains;
   std::vector<double> grain_mass;
+  bool grains_listed = false;
 
   void list_grains()
   {
+    grains_listed = true;
     grains.clear();
     grain_mass.clear();
     for (int i = 0; i < atom->nlocal; ++i)
@@ -148,10 +147,11 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
         GRANSPH::StepStart s{{sa[is + V_START], sa[is + V_START + 1], sa[is + V_START + 2]},
                              sa[is + RHO_START], Sym3::load(sa, is + SIGMA_START)};
         // the predictor takes the acceleration of the last step's mid-point, which the
-        // corrector kept (or step_grains() put there), the corrector that of this
-        // evaluation
+        // corrector kept, or a grain without a step that of the setup evaluation; the
+        // corrector that of this evaluation
         GRANSPH::StepRates r = rates_of(ra, ir);
-        if (STAGE == CORRECT)
+        const bool unstepped = STAGE == PREDICT && sa[is + STEPPED] == 0.0;
+        if (STAGE == CORRECT || unstepped)    // a selection in the vectorised predictor
           for (int c = 0; c < 3; ++c) r.acc[c] = ftm * f[ix + c];
         GRANSPH::Regime regime;
         if (STAGE == PREDICT) {

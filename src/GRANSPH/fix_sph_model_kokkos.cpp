@@ -292,7 +292,7 @@ void FixSPHModelKokkos<DeviceType, Model>::reset_cfl_timestep()
   const double E = this->material.E;
   const double rho_ref = this->rho_init;
   const bool reference = this->cfl_sound_reference;
-  double local[2] = {0.0, 0.0};    // max |a|^2, max c
+  double local[2] = {0.0, 0.0};    // max |a|^2 (the lowest double without grains), max c
   Kokkos::parallel_reduce(
       Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
       LAMMPS_LAMBDA(const int i, double &amax2) {
@@ -302,15 +302,17 @@ void FixSPHModelKokkos<DeviceType, Model>::reset_cfl_timestep()
         if (a2 > amax2) amax2 = a2;
       },
       Kokkos::Max<double>(local[0]));
-  Kokkos::parallel_reduce(
-      Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
-      LAMMPS_LAMBDA(const int i, double &cmax) {
-        if (!(mask(i) & groupbit)) return;
-        const double c =
-            GRANSPH::sound_speed(E, GRANSPH::cfl_density(state(i, FSI::RHO), rho_ref, reference));
-        if (c > cmax) cmax = c;
-      },
-      Kokkos::Max<double>(local[1]));
+  if (reference)    // one sound speed: no second pass (a parallel region of its own)
+    local[1] = local[0] >= 0.0 ? GRANSPH::sound_speed(E, rho_ref) : 0.0;
+  else
+    Kokkos::parallel_reduce(
+        Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
+        LAMMPS_LAMBDA(const int i, double &cmax) {
+          if (!(mask(i) & groupbit)) return;
+          const double c = GRANSPH::sound_speed(E, state(i, FSI::RHO));
+          if (c > cmax) cmax = c;
+        },
+        Kokkos::Max<double>(local[1]));
   double global[2];
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, this->world);
   if (global[1] == 0.0) return;

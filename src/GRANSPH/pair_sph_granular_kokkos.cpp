@@ -137,7 +137,10 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   if ((int) d_particles.extent(0) < nall)
     d_particles = decltype(d_particles)(
         Kokkos::view_alloc(Kokkos::WithoutInitializing, "pair:particles"), atom->nmax);
-  pack_particles(kk, 0, nall);
+  // with rows pruned since the last list build, the pack also finds how far the atoms
+  // have moved since (one pass, one parallel region)
+  const bool pruned_rows_may_stay = prune > 0.0 && !rows_outdated(nall);
+  const double moved_sq = pack_particles(kk, 0, nall, pruned_rows_may_stay);
 
   DeviceParticles<DeviceType> p;
   p.particles = d_particles;
@@ -170,7 +173,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
     p.friction_slide = k_slide.template view<DeviceType>();
   }
 
-  if (prune > 0.0) prune_rows(p, nall);
+  if (prune > 0.0) prune_rows(p, nall, moved_sq);
   if (update->setupflag) {    // no two interacting particles on one place
     auto ilist = k_list->d_ilist;
     int found = -1;
@@ -288,11 +291,14 @@ void PairSPHGranularKokkos<DeviceType>::unpack_forward_comm_device(
 }
 
 // the pair data of atoms [from, to); an atom that is neither grain nor dummy massless
-// (the neighbour sums read it, and add nothing from it)
+// (the neighbour sums read it, and add nothing from it). Returns, since_pruned, the
+// largest squared distance any of them has moved since the rows were pruned.
 template <class DeviceType>
-void PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int from, int to)
+double PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int from, int to,
+                                                         bool since_pruned)
 {
-  if (from >= to) return;
+  double farthest = 0.0;
+  if (from >= to) return farthest;
   auto particles = d_particles;
   auto x = atomKK->k_x.template view<DeviceType>();
   auto v = atomKK->k_v.template view<DeviceType>();
@@ -305,21 +311,36 @@ void PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int f
   const int use_rmass = atom->rmass != nullptr;
   const double E = integrator->material.E;
   const GRANSPH::Viscosity visc = this->visc;
-  Kokkos::parallel_for(
-      Kokkos::RangePolicy<DeviceType>(from, to), LAMMPS_LAMBDA(const int i) {
-        const double xi[3] = {x(i, 0), x(i, 1), x(i, 2)};
-        const double vi[3] = {v(i, 0), v(i, 1), v(i, 2)};
-        if (!(mask(i) & sphbits)) {
-          particles(i) = GRANSPH::PairParticle::make(xi, vi, 0.0, 1.0, GRANSPH::Sym3::zero(), 0.0);
-          return;
-        }
-        const GRANSPH::Sym3 sigma{state(i, FSI::SIGMA),     state(i, FSI::SIGMA + 1),
-                                  state(i, FSI::SIGMA + 2), state(i, FSI::SIGMA + 3),
-                                  state(i, FSI::SIGMA + 4), state(i, FSI::SIGMA + 5)};
-        const double rho = state(i, FSI::RHO);
-        particles(i) = GRANSPH::PairParticle::make(xi, vi, use_rmass ? rmass(i) : mass(type(i)),
-                                                   rho, sigma, visc.sound_speed(E, rho));
-      });
+  const auto pack = LAMMPS_LAMBDA(const int i)
+  {
+    const double xi[3] = {x(i, 0), x(i, 1), x(i, 2)};
+    const double vi[3] = {v(i, 0), v(i, 1), v(i, 2)};
+    if (!(mask(i) & sphbits)) {
+      particles(i) = GRANSPH::PairParticle::make(xi, vi, 0.0, 1.0, GRANSPH::Sym3::zero(), 0.0);
+      return;
+    }
+    const GRANSPH::Sym3 sigma{state(i, FSI::SIGMA),     state(i, FSI::SIGMA + 1),
+                              state(i, FSI::SIGMA + 2), state(i, FSI::SIGMA + 3),
+                              state(i, FSI::SIGMA + 4), state(i, FSI::SIGMA + 5)};
+    const double rho = state(i, FSI::RHO);
+    particles(i) = GRANSPH::PairParticle::make(xi, vi, use_rmass ? rmass(i) : mass(type(i)), rho,
+                                               sigma, visc.sound_speed(E, rho));
+  };
+  const Kokkos::RangePolicy<DeviceType> atoms(from, to);
+  if (!since_pruned) {    // no reduction, which would wait for a device
+    Kokkos::parallel_for(atoms, pack);
+    return farthest;
+  }
+  auto x0 = d_pruned_x;
+  Kokkos::parallel_reduce(
+      atoms,
+      LAMMPS_LAMBDA(const int i, double &most) {
+        const double rsq = GRANSPH::pruned_displacement_sq(x, x0, i);
+        if (rsq > most) most = rsq;
+        pack(i);
+      },
+      Kokkos::Max<double>(farthest));
+  return farthest;
 }
 
 // what adds the grains' forces to the dummy particles in this evaluation
@@ -410,25 +431,14 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::pack_particl
 }
 
 // p over rows pruned from its rows (GRANSPH::prune_row), made anew when outdated or when
-// an atom has moved too far
+// an atom has moved too far: moved_sq, the largest squared distance since the last pruning
 template <class DeviceType>
-void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &p, int nall)
+void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &p, int nall,
+                                                   double moved_sq)
 {
   auto x = atomKK->k_x.template view<DeviceType>();
   auto x0 = d_pruned_x;
-  bool anew = rows_outdated(nall);
-  if (!anew) {
-    double farthest = 0.0;
-    Kokkos::parallel_reduce(
-        Kokkos::RangePolicy<DeviceType>(0, nall),
-        LAMMPS_LAMBDA(const int i, double &most) {
-          const double rsq = GRANSPH::pruned_displacement_sq(x, x0, i);
-          if (rsq > most) most = rsq;
-        },
-        Kokkos::Max<double>(farthest));
-    anew = farthest > prune_renewal_sq();
-  }
-  if (anew) {
+  if (rows_outdated(nall) || moved_sq > prune_renewal_sq()) {
     auto k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
     if ((int) d_pruned_x.extent(0) < nall)
       d_pruned_x = decltype(d_pruned_x)(

@@ -43,14 +43,14 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   void unpack_forward_comm_device(int, int, GRANSPHCompat::tdual_comm_buffer &);
 
   // device kernels (public: CUDA lambdas may not live in private members)
-  void pack_particles(SPHStateKokkos &kk, int from, int to);
+  double pack_particles(SPHStateKokkos &kk, int from, int to, bool since_pruned = false);
   void pack_particles_single(int n);
   void walls(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk, bool with_forces);
   void wall_forces(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
   // Particles: DeviceParticles<DeviceType> or, under precision mixed, over PairParticleSingle
   template <class Particles> void grains(const Particles &p, SPHStateKokkos &kk);
   template <class Particles> void viscous_pressures(const Particles &p);
-  void prune_rows(DeviceParticles<DeviceType> &p, int nall);
+  void prune_rows(DeviceParticles<DeviceType> &p, int nall, double moved_sq);
 
  private:
   GRANSPHCompat::tdual_virial k_vatom;
