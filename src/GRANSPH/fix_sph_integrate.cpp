@@ -21,6 +21,7 @@
 #include "pair_sph_granular.h"
 #include "update.h"
 
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 
@@ -328,20 +329,21 @@ void FixSPHIntegrate::reset_cfl_timestep()
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
 
-  double local[2] = {0.0, 0.0};    // max |a|^2, max c
+  // max |a|^2 (negative without grains) and, local, minus the grains' lowest density
+  double local[2] = {-1.0, -DBL_MAX};
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
     const double m = rmass ? rmass[i] : mass[type[i]];
     const double a2 = (f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]) / (m * m);
     local[0] = MAX(local[0], a2);
-    const double rho = GRANSPH::cfl_density(state[i][RHO], rho_init, cfl_sound_reference);
-    local[1] = MAX(local[1], GRANSPH::sound_speed(material.E, rho));
+    if (!cfl_sound_reference) local[1] = MAX(local[1], -state[i][RHO]);
   }
   double global[2];
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
-  if (global[1] == 0.0) return;    // no granular particles anywhere
+  if (global[0] < 0.0) return;    // no granular particles anywhere
+  const double rho = GRANSPH::cfl_density(-global[1], rho_init, cfl_sound_reference);
   set_timestep(GRANSPH::cfl_timestep(cfl, smoothing_length(), sqrt(global[0]) * force->ftm2v,
-                                     global[1]));
+                                     GRANSPH::sound_speed(material.E, rho)));
 }
 
 // as fix dt/reset does

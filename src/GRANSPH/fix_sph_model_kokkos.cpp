@@ -16,6 +16,8 @@
 #include "pair.h"
 #include "update.h"
 
+#include <cfloat>
+
 using namespace LAMMPS_NS;
 using FSI = FixSPHIntegrate;
 
@@ -292,7 +294,8 @@ void FixSPHModelKokkos<DeviceType, Model>::reset_cfl_timestep()
   const double E = this->material.E;
   const double rho_ref = this->rho_init;
   const bool reference = this->cfl_sound_reference;
-  double local[2] = {0.0, 0.0};    // max |a|^2 (the lowest double without grains), max c
+  // max |a|^2 (negative without grains) and, local, minus the grains' lowest density
+  double local[2] = {-1.0, -DBL_MAX};
   Kokkos::parallel_reduce(
       Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
       LAMMPS_LAMBDA(const int i, double &amax2) {
@@ -302,22 +305,20 @@ void FixSPHModelKokkos<DeviceType, Model>::reset_cfl_timestep()
         if (a2 > amax2) amax2 = a2;
       },
       Kokkos::Max<double>(local[0]));
-  if (reference)    // one sound speed: no second pass (a parallel region of its own)
-    local[1] = local[0] >= 0.0 ? GRANSPH::sound_speed(E, rho_ref) : 0.0;
-  else
+  if (!reference)    // a parallel region of its own, needed by local only
     Kokkos::parallel_reduce(
         Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
-        LAMMPS_LAMBDA(const int i, double &cmax) {
-          if (!(mask(i) & groupbit)) return;
-          const double c = GRANSPH::sound_speed(E, state(i, FSI::RHO));
-          if (c > cmax) cmax = c;
+        LAMMPS_LAMBDA(const int i, double &most) {
+          if ((mask(i) & groupbit) && -state(i, FSI::RHO) > most) most = -state(i, FSI::RHO);
         },
         Kokkos::Max<double>(local[1]));
   double global[2];
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, this->world);
-  if (global[1] == 0.0) return;
+  if (global[0] < 0.0) return;    // no granular particles anywhere
+  const double rho = GRANSPH::cfl_density(-global[1], rho_ref, reference);
   this->set_timestep(GRANSPH::cfl_timestep(this->cfl, this->smoothing_length(),
-                                           sqrt(global[0]) * this->force->ftm2v, global[1]));
+                                           sqrt(global[0]) * this->force->ftm2v,
+                                           GRANSPH::sound_speed(E, rho)));
 }
 
 // The per-atom output is read on the host: bring it there on output steps only.

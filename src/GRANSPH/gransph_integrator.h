@@ -119,12 +119,13 @@ KOKKOS_INLINE_FUNCTION bool bad_state(const ParticleState &p)
   return !(sum - sum == 0.0) | !(p.rho > 0.0);
 }
 
-// The density of eq. 19's sound speed sqrt(E / rho) for a grain of density rho: its own
+// The density of eq. 19's largest sound speed sqrt(E / rho): the grains' lowest, rho_min
 // (local), or the material's initial density (reference: a dilated grain, whose few and
-// distant neighbours make it no stiffer, does not shorten the step).
-KOKKOS_INLINE_FUNCTION double cfl_density(double rho, double rho_ref, bool reference)
+// distant neighbours make it no stiffer, does not shorten the step). Only local needs a
+// pass over the grains for it.
+KOKKOS_INLINE_FUNCTION double cfl_density(double rho_min, double rho_ref, bool reference)
 {
-  return reference ? rho_ref : rho;
+  return reference ? rho_ref : rho_min;
 }
 
 // Eq. 19: dt = C min(sqrt(h / max|a|), h / max c).
