@@ -69,14 +69,7 @@ ComputeSPHRunout::~ComputeSPHRunout()
 
 void ComputeSPHRunout::init()
 {
-  const FixSPHIntegrate *integrator = nullptr;
-  for (int i = 0; i < modify->nfix && !integrator; ++i)
-    integrator = dynamic_cast<FixSPHIntegrate *>(modify->fix[i]);
-  if (!integrator)
-    error->all(FLERR,
-               "Compute sph/runout requires a GRANSPH integrator (fix sph/elastoplastic or fix "
-               "sph/phasechange) for the grains' density");
-  rho0 = integrator->material.rho0;
+  rho0 = FixSPHIntegrate::find(lmp, "Compute sph/runout").material.rho0;
 }
 
 double ComputeSPHRunout::radius(const double *x) const

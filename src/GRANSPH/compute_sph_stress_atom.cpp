@@ -45,12 +45,7 @@ void ComputeSPHStressAtom::init()
 // before any run has called init
 FixSPHIntegrate *ComputeSPHStressAtom::integrator() const
 {
-  for (int i = 0; i < modify->nfix; ++i)
-    if (auto fix = dynamic_cast<FixSPHIntegrate *>(modify->fix[i])) return fix;
-  error->all(FLERR,
-             "Compute sph/stress/atom requires a GRANSPH integrator (fix sph/elastoplastic or "
-             "fix sph/phasechange)");
-  return nullptr;
+  return &FixSPHIntegrate::find(lmp, "Compute sph/stress/atom");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -67,6 +62,7 @@ void ComputeSPHStressAtom::compute_peratom()
 
   FixSPHIntegrate *fix = integrator();
   fix->sync_state_host();
+  const FixSPHIntegrate::HostState state = fix->host_state();
   const int *mask = atom->mask;
   for (int i = 0; i < atom->nlocal; ++i) {
     double *out = values[i];
@@ -74,7 +70,7 @@ void ComputeSPHStressAtom::compute_peratom()
       for (int k = 0; k < NCOLS; ++k) out[k] = 0.0;
       continue;
     }
-    const GRANSPH::Sym3 sigma = GRANSPH::Sym3::load(&fix->state[i][FixSPHIntegrate::SIGMA]);
+    const GRANSPH::Sym3 sigma = state.sigma(i);
     const GRANSPH::StressInvariants s = GRANSPH::stress_invariants(sigma);
     out[P] = s.p;
     out[Q] = s.q;
@@ -84,7 +80,7 @@ void ComputeSPHStressAtom::compute_peratom()
     }
     out[LODE] = s.lode;
     out[MOBILISED] = fix->mobilised_ratio(sigma);
-    out[REGIME] = fix->state[i][FixSPHIntegrate::REGIME];
+    out[REGIME] = state.regime(i);
   }
 }
 

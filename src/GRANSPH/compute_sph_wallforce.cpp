@@ -56,13 +56,7 @@ void ComputeSPHWallForce::init()
   if (!force->pair_match("sph/granular", 0))
     error->all(FLERR, "Compute sph/wallforce requires pair_style sph/granular");
 
-  const FixSPHIntegrate *integrator = nullptr;
-  for (int i = 0; i < modify->nfix && !integrator; ++i)
-    integrator = dynamic_cast<FixSPHIntegrate *>(modify->fix[i]);
-  if (!integrator)
-    error->all(FLERR,
-               "Compute sph/wallforce requires a GRANSPH integrator (fix sph/elastoplastic or "
-               "fix sph/phasechange)");
+  const FixSPHIntegrate *integrator = &FixSPHIntegrate::find(lmp, "Compute sph/wallforce");
   if (!integrator->wallbit)
     error->all(FLERR, "Compute sph/wallforce: fix {} has no walls group (keyword walls)",
                integrator->id);

@@ -17,7 +17,7 @@ FixStyle(sph/elastoplastic,FixSPHElastoplastic);
 namespace LAMMPS_NS {
 
 using FixSPHElastoplastic = FixSPHModel<GRANSPH::DruckerPrager>;
-// instantiated once, in fix_sph_model.cpp: a small unit, in which the compiler inlines the
+// instantiated once, in fix_sph_elastoplastic.cpp: a small unit, in which the compiler inlines the
 // model into the step's loop and vectorises it
 extern template class FixSPHModel<GRANSPH::DruckerPrager>;
 

@@ -216,13 +216,7 @@ int FixSPHInflow::setmask()
 
 void FixSPHInflow::init()
 {
-  integrator = nullptr;
-  for (int i = 0; i < modify->nfix; ++i)
-    if (auto fix = dynamic_cast<FixSPHIntegrate *>(modify->fix[i])) integrator = fix;
-  if (!integrator)
-    error->all(FLERR,
-               "Fix sph/inflow needs a GRANSPH integrator fix (sph/elastoplastic or "
-               "sph/phasechange) to advance the particles it inserts");
+  integrator = &FixSPHIntegrate::find(lmp, "Fix sph/inflow");
   if (integrator->igroup != 0 && integrator->igroup != igroup)
     error->all(FLERR,
                "Fix sph/inflow: its group {} is not integrated: the integrator fix {} acts on "
@@ -357,12 +351,7 @@ int FixSPHInflow::insert_layer(double t_emit, double t_place)
     // in a run the particle joins between the predictor and the corrector,
     // which continues from the start-of-step state: its own (at a setup the
     // predictor overwrites it)
-    double *start = integrator->start[n];
-    const double *state = integrator->state[n];
-    for (int a = 0; a < 3; ++a) start[FixSPHIntegrate::V_START + a] = atom->v[n][a];
-    start[FixSPHIntegrate::RHO_START] = state[FixSPHIntegrate::RHO];
-    for (int k = 0; k < 6; ++k)
-      start[FixSPHIntegrate::SIGMA_START + k] = state[FixSPHIntegrate::SIGMA + k];
+    integrator->host_state().start_step_here(n, atom->v[n]);
     ++ncreated;
   }
   return ncreated;

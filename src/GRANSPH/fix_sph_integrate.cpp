@@ -6,8 +6,9 @@
 
 #include "fix_sph_integrate.h"
 
-#include "gransph_lammps_compat.h"
 #include "gransph_integrator.h"
+#include "gransph_lammps_compat.h"
+#include "gransph_pair_settings.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -18,7 +19,6 @@
 #include "memory.h"
 #include "modify.h"
 #include "pair.h"
-#include "pair_sph_granular.h"
 #include "update.h"
 
 #include <cfloat>
@@ -30,13 +30,38 @@ using namespace FixConst;
 using GRANSPH::Sym3;
 
 namespace {
-// the settings of the pair style the rates depend on (none for another style)
-std::vector<double> pair_settings(const Force *force)
+// the settings of pair_style sph/granular (null for another pair style)
+const GRANSPH::PairSettings *pair_settings(Force *force)
 {
-  auto pair = dynamic_cast<const PairSPHGranular *>(force->pair);
-  return pair ? pair->rate_settings() : std::vector<double>();
+  int dim = 0;
+  return force->pair ? static_cast<const GRANSPH::PairSettings *>(force->pair->extract("settings", dim))
+                     : nullptr;
 }
+
+// In a fix's restart data, a settings record is marked by its version's negative where files
+// written before it hold the count of their list of rate settings (>= 0)
+constexpr double RECORD_FOLLOWS = -1.0;
 }    // namespace
+
+FixSPHIntegrate &FixSPHIntegrate::find(LAMMPS *lmp, const std::string &who)
+{
+  FixSPHIntegrate *found = nullptr;
+  for (int i = 0; i < lmp->modify->nfix; ++i)
+    if (auto fix = dynamic_cast<FixSPHIntegrate *>(lmp->modify->fix[i])) {
+      if (found)
+        lmp->error->all(FLERR,
+                        "{}: fixes {} and {} are both GRANSPH integrators; only one may be "
+                        "defined",
+                        who, found->id, fix->id);
+      found = fix;
+    }
+  if (!found)
+    lmp->error->all(FLERR,
+                    "{} needs a GRANSPH integrator fix (fix sph/elastoplastic or fix "
+                    "sph/phasechange)",
+                    who);
+  return *found;
+}
 
 /* ---------------------------------------------------------------------- */
 
@@ -44,7 +69,7 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), state(nullptr), rates(nullptr), start(nullptr), wallbit(0),
     rho_init(0.0), cfl(0.2), cfl_sound_reference(1), predictor_extrapolated(0), nrates(RATES_DT),
     geostatic_flag(0), surface_height(0.0),
-    restored(0), last_dt(0.0), fresh_start(nullptr)
+    restored(0), last_dt(0.0), ran_with_pair_settings(false), fresh_start(nullptr)
 {
   const std::string style_name = std::string("fix ") + style;
   if (narg < 5) error->all(FLERR, "Illegal {} command: need a material file and name", style_name);
@@ -145,10 +170,7 @@ void FixSPHIntegrate::init()
     error->all(FLERR, "Fix {} requires pair_style sph/granular", style);
   if (update->whichflag == 1 && utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix {} does not support run_style respa", style);
-  int count = 0;
-  for (int i = 0; i < modify->nfix; ++i)
-    if (dynamic_cast<FixSPHIntegrate *>(modify->fix[i])) ++count;
-  if (count > 1) error->all(FLERR, "Only one GRANSPH integrator fix may be defined");
+  find(lmp, std::string("Fix ") + style);    // the only one
 
   int overlap = 0;
   for (int i = 0; i < atom->nlocal; ++i)
@@ -185,7 +207,9 @@ void FixSPHIntegrate::setup(int /*vflag*/)
     reset_cfl_timestep();
   } else
     restore_step();
-  last_pair_settings = pair_settings(force);
+  const GRANSPH::PairSettings *settings = pair_settings(force);
+  ran_with_pair_settings = settings != nullptr;
+  if (settings) last_pair_settings = *settings;
 }
 
 void FixSPHIntegrate::end_of_step()
@@ -207,7 +231,8 @@ const char *FixSPHIntegrate::why_not_continue() const
   int any = 0;
   MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, world);
   if (!any) return "no previous step";
-  if (pair_settings(force) != last_pair_settings)
+  const GRANSPH::PairSettings *settings = pair_settings(force);
+  if (!settings || !ran_with_pair_settings || !settings->same_rates(last_pair_settings))
     return "the pair style settings changed since the last step";
   if (update->dt != last_dt) return "the timestep changed since the last step";
   return nullptr;
@@ -258,13 +283,19 @@ void FixSPHIntegrate::restore_step()
                    total[1]);
 }
 
-// Global restart data: what the last step ran with, and the elapsed time, which
-// restart files of this LAMMPS version leave out although the CFL timestep varies.
+// Global restart data: what the last step ran with (the timestep, and the pair style's
+// settings as a record), and the elapsed time, which restart files of this LAMMPS
+// version leave out although the CFL timestep varies.
 void FixSPHIntegrate::write_restart(FILE *fp)
 {
-  std::vector<double> list = {last_dt, update->atime, (double) update->atimestep,
-                              (double) last_pair_settings.size()};
-  list.insert(list.end(), last_pair_settings.begin(), last_pair_settings.end());
+  std::vector<double> list = {last_dt, update->atime, (double) update->atimestep, 0.0};
+  if (ran_with_pair_settings) {
+    const std::vector<double> record = last_pair_settings.record();
+    list.back() = RECORD_FOLLOWS;
+    list.push_back(GRANSPH::PairSettings::VERSION);
+    list.push_back(record.size());
+    list.insert(list.end(), record.begin(), record.end());
+  }
   if (comm->me == 0) {
     const int size = list.size() * sizeof(double);
     fwrite(&size, sizeof(int), 1, fp);
@@ -280,7 +311,13 @@ void FixSPHIntegrate::restart(char *buf)
     update->atime = list[1];
     update->atimestep = static_cast<bigint>(list[2]);
   }
-  last_pair_settings.assign(list + 4, list + 4 + static_cast<int>(list[3]));
+  const int count = static_cast<int>(list[3]);
+  ran_with_pair_settings = count != 0;
+  if (list[3] == RECORD_FOLLOWS)
+    last_pair_settings = GRANSPH::PairSettings::from_record(lmp, static_cast<int>(list[4]),
+                                                            list + 6, static_cast<int>(list[5]));
+  else if (count > 0)
+    last_pair_settings = GRANSPH::PairSettings::from_legacy_rates(list + 4, count);
 }
 
 /* ---------------------------------------------------------------------- */

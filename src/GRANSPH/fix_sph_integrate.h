@@ -4,7 +4,9 @@
    Owns the per-atom SPH state (density and Cauchy stress), the rates the pair
    style writes (density rate, strain rate, spin) and the predictor copies, and
    sets the CFL timestep (eq. 19). FixSPHModel<Model> (fix_sph_model.h) adds the
-   predictor-corrector with a constitutive model.
+   predictor-corrector with a constitutive model. The other styles find it with
+   find() and reach its state by name (host_state(); SPHStateKokkos::state_on on
+   a device).
 
    A run continues the previous one exactly: the predictor of a step uses the
    rates and acceleration of the previous step's mid-point, so they, the wall
@@ -18,42 +20,23 @@
 #include "atom.h"
 #include "fix.h"
 #include "gransph_material.h"
+#include "gransph_pair_settings.h"
+#include "gransph_state.h"
 #include "gransph_tensor.h"
 
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
 
-class FixSPHIntegrate : public Fix {
+// The owner of the per-atom GRANSPH state: its columns are GRANSPH::StateLayout, its
+// contract with the other styles GRANSPH::StateAccess (gransph_state.h)
+class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
  public:
-  // Columns of the per-atom arrays. STATE is restarted and is the fix's per-atom
-  // output (f_ID[1] = rho, f_ID[2..7] = stress, f_ID[8] = GRANSPH::Regime); its
-  // first NCOMM columns are forward-communicated to ghosts. Restart files written
-  // before December 2026 carry one more state column (STATE_WITH_VISC: the viscous
-  // pressure, now compute sph/visc/atom's).
-  enum { RHO = 0, SIGMA = 1, REGIME = 7, NSTATE = 8, STATE_WITH_VISC = 9, NCOMM = 7 };
-  // RATES: what the pair style writes, and the acceleration of the same evaluation
-  // that the next predictor uses; from RATES_DT on, only with predictor extrapolated
-  // (which alone allocates those columns, see nrates, so that the default keeps the
-  // layout and restart files of before): the step whose mid-point they are, and from
-  // PREV the same for the step before. START: the start of the step for the
-  // corrector, the wall velocity of the last evaluation, and STEPPED: the number of
-  // steps, up to 2, whose evaluation the atom's rates (grains) or wall velocity (dummy
-  // particles) come from; WALL_F: the grains' force on a dummy particle in the last
-  // evaluation (the pair style's part of its f), which the setup of a run that
-  // continues the last repeats.
-  enum { DRHO = 0, STRAIN = 1, SPIN = 7, ACC = 10, RATES_DT = 13, PREV = 14, NRATES = 28 };
-  enum {
-    V_START = 0,
-    RHO_START = 3,
-    SIGMA_START = 4,
-    WALL_V = 10,
-    STEPPED = 13,
-    WALL_F = 14,
-    NSTART = 17
-  };
-
   FixSPHIntegrate(class LAMMPS *, int, char **);
+  // The GRANSPH integrator fix: an error that names `who` (e.g. "Compute sph/runout") if
+  // there is none or more than one
+  static FixSPHIntegrate &find(class LAMMPS *lmp, const std::string &who);
   ~FixSPHIntegrate() override;
   int setmask() override;
   void init() override;
@@ -76,11 +59,15 @@ class FixSPHIntegrate : public Fix {
   void unpack_forward_comm(int, int, double *) override;
   double memory_usage() override;
 
-  // What sph/granular reads and writes.
-  double **state;    // rho, sigma (xx yy zz xy xz yz), regime
-  double **rates;    // drho/dt, strain rate (6), spin (xy xz yz), acceleration
-  double **start;    // v, rho, sigma at the start of the step; last wall velocity; stepped;
-                     // last wall force
+  // The per-atom state by name, on the host (the Kokkos twin's host copies: sync them
+  // first), for the pair style, the computes and the other fixes
+  using HostState = GRANSPH::StateAccess<GRANSPH::HostRows<NSTATE>, GRANSPH::HostRowsOf,
+                                         GRANSPH::HostRows<NSTART>>;
+  HostState host_state() const
+  {
+    return {{state ? state[0] : nullptr}, {rates ? rates[0] : nullptr, nrates},
+            {start ? start[0] : nullptr}};
+  }
   int wallbit;       // group bit of the dummy-wall particles (0: no walls)
   GranSPHMaterial material;
 
@@ -99,6 +86,10 @@ class FixSPHIntegrate : public Fix {
   bool continues_last_step() const { return fresh_start == nullptr; }
 
  protected:
+  double **state;    // rho, sigma (xx yy zz xy xz yz), regime
+  double **rates;    // drho/dt, strain rate (6), spin (xy xz yz), acceleration
+  double **start;    // v, rho, sigma at the start of the step; last wall velocity; stepped;
+                     // last wall force
   double rho_init;      // initial density of all particles (material rho0 by default)
   double cfl;           // CFL factor of eq. 19; 0 keeps the LAMMPS timestep
   int cfl_sound_reference;    // eq. 19's sound speed at rho_init, not at each grain's density
@@ -118,7 +109,8 @@ class FixSPHIntegrate : public Fix {
  private:
   // what the last step ran with: a run continues with its rates only if unchanged
   double last_dt;
-  std::vector<double> last_pair_settings;    // empty: no run yet
+  bool ran_with_pair_settings;                // false: no run yet
+  GRANSPH::PairSettings last_pair_settings;
   const char *fresh_start;                   // why this run cannot continue, or nullptr
   std::vector<double> saved;                 // the arrays across the setup evaluation
 

@@ -38,10 +38,10 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
     FixSPHIntegrate::setup(vflag);
     grains_listed = false;    // atoms, groups and masses may have changed since the last run
   }
-  void initial_integrate(int) override { step(PREDICT); }
+  void initial_integrate(int) override { step(GRANSPH::PREDICT); }
   void final_integrate() override
   {
-    if (step(CORRECT)) check_finite();    // which atom, in the error message
+    if (step(GRANSPH::CORRECT)) check_finite();    // which atom, in the error message
   }
 
   double mobilised_ratio(const GRANSPH::Sym3 &sigma) const override
@@ -53,45 +53,69 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
   const Model model;
 
  protected:
-  enum Stage { PREDICT, CORRECT };
+  using Stage = GRANSPH::Stage;
 
-  // What the grains' step reads and writes: each per-atom array as its rows from the
-  // first (LAMMPS' x, v, f; state, rates, start), and the grains' indices and masses.
-  struct GrainArrays {
-    double *x, *v;
-    const double *f;
-    double *state, *rates, *start;
-    int nrates, n;
+  // The rows the grains' step reads and writes (GRANSPH::step_grain): LAMMPS' x, v, f and
+  // the integrator's arrays, over the grains' indices and masses
+  struct GrainRows {
+    GRANSPH::HostRows<3> x, v;
+    GRANSPH::HostRows<3, const double> f;
+    GRANSPH::HostRows<NSTATE> state;
+    GRANSPH::HostRowsOf rates;
+    GRANSPH::HostRows<NSTART> start;
     const int *index;
-    const double *mass;
+    const double *masses;
+    KOKKOS_INLINE_FUNCTION int atom(int k) const { return index[k]; }
+    KOKKOS_INLINE_FUNCTION double mass(int k) const { return masses[k]; }
+  };
+
+  // The step of the grains [begin, end) of `rows`, in a loop that the compiler can
+  // vectorise (VectorisedStep). Returns how many of them the corrector left with a bad
+  // state (the run stops), 0 for the predictor.
+  template <Stage STAGE, bool EXTRAPOLATE, class M> struct Advance {
+    M m;
+    GrainRows rows;
+    int n;
     double dt, ftm2v;
+
+    int operator()(int begin, int end) const
+    {
+      int bad = 0;
+      GRANSPH_SIMD_IF_SUM(VectorisedStep<M>::value, bad)
+      for (int k = begin; k < end; ++k)
+        bad += GRANSPH::step_grain<STAGE, EXTRAPOLATE>(m, rows, k, dt, ftm2v);
+      return bad;
+    }
   };
 
   // Every grain's predictor or corrector step, with x, v, f where this rank's atoms have
-  // them: chunks(advance) runs advance(begin, end) over [0, advance.a.n) of the grains,
-  // at once (the plain fix) or in parallel chunks (its Kokkos twin on the host), and
-  // returns the sum of what advance returns: the corrector's count of grains with a bad
-  // new state (GRANSPH::bad_state).
+  // them: chunks(advance) runs advance(begin, end) over [0, advance.n) of the grains, at
+  // once (the plain fix) or in parallel chunks (its Kokkos twin on the host), and returns
+  // the sum of what advance returns: the corrector's count of grains with a bad new state
+  // (GRANSPH::bad_state).
   template <class Chunks> int step_grains(Stage stage, double **x, double **v, double **f,
                                           Chunks chunks)
   {
     // within a run, atoms are exchanged, sorted, created and deleted only when a step
     // reneighbours, between its predictor and its corrector
-    if (!grains_listed || (stage == CORRECT && neighbor->ago == 0)) list_grains();
+    if (!grains_listed || (stage == GRANSPH::CORRECT && neighbor->ago == 0)) list_grains();
     if (grains.empty()) return 0;
-    const GrainArrays a{x[0],    v[0],          f[0], state[0],          rates[0],
-                        start[0], nrates,       (int) grains.size(), grains.data(),
-                        grain_mass.data(), update->dt, force->ftm2v};
+    const GrainRows rows{{x[0]},          {v[0]},    {f[0]},        {state[0]},
+                         {rates[0], nrates}, {start[0]}, grains.data(), grain_mass.data()};
+    const int n = grains.size();
+    const double dt = update->dt, ftm2v = force->ftm2v;
     // the model's variant for this run, so that the loop has no branch on it
     int bad = 0;
     with_run_variant(model, [&](const auto &m) {    // found by ADL: the model's own
       using M = typename std::decay<decltype(m)>::type;
+      using GRANSPH::CORRECT;
+      using GRANSPH::PREDICT;
       if (stage == PREDICT)
-        bad = predictor_extrapolated ? chunks(Advance<PREDICT, true, M>{m, a})
-                                     : chunks(Advance<PREDICT, false, M>{m, a});
+        bad = predictor_extrapolated ? chunks(Advance<PREDICT, true, M>{m, rows, n, dt, ftm2v})
+                                     : chunks(Advance<PREDICT, false, M>{m, rows, n, dt, ftm2v});
       else
-        bad = predictor_extrapolated ? chunks(Advance<CORRECT, true, M>{m, a})
-                                     : chunks(Advance<CORRECT, false, M>{m, a});
+        bad = predictor_extrapolated ? chunks(Advance<CORRECT, true, M>{m, rows, n, dt, ftm2v})
+                                     : chunks(Advance<CORRECT, false, M>{m, rows, n, dt, ftm2v});
     });
     return bad;
   }
@@ -118,78 +142,7 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
   int step(Stage stage)
   {
     return step_grains(stage, atom->x, atom->v, atom->f,
-                       [](const auto &advance) { return advance(0, advance.a.n); });
-  }
-
-  // The step of the grains [begin, end), in a loop that the compiler can vectorise
-  // (VectorisedStep): each per-atom array read and written at a fixed stride from its
-  // first row, the choices of a lane as selections. Returns how many of them the
-  // corrector left with a bad state (the run stops), 0 for the predictor.
-  template <Stage STAGE, bool EXTRAPOLATE, class M> struct Advance {
-    M m;
-    GrainArrays a;
-
-    int operator()(int begin, int end) const
-    {
-      using GRANSPH::Sym3;
-      double *x = a.x, *v = a.v, *st = a.state, *ra = a.rates, *sa = a.start;
-      const double *f = a.f, *mass = a.mass;
-      const int *index = a.index, nr = a.nrates;
-      const double dt = a.dt, ftm2v = a.ftm2v;
-      int bad = 0;
-      GRANSPH_SIMD_IF_SUM(VectorisedStep<M>::value, bad)
-      for (int k = begin; k < end; ++k) {
-        // grain i's values in each array, at a multiple of its row: what a gather can take
-        const int i = index[k], ix = 3 * i, ist = NSTATE * i, ir = nr * i, is = NSTART * i;
-        const double ftm = ftm2v / mass[k];
-        GRANSPH::ParticleState p{{x[ix], x[ix + 1], x[ix + 2]}, {v[ix], v[ix + 1], v[ix + 2]},
-                                 st[ist + RHO], Sym3::load(st, ist + SIGMA)};
-        GRANSPH::StepStart s{{sa[is + V_START], sa[is + V_START + 1], sa[is + V_START + 2]},
-                             sa[is + RHO_START], Sym3::load(sa, is + SIGMA_START)};
-        // the predictor takes the acceleration of the last step's mid-point, which the
-        // corrector kept, or a grain without a step that of the setup evaluation; the
-        // corrector that of this evaluation
-        GRANSPH::StepRates r = rates_of(ra, ir);
-        const bool unstepped = STAGE == PREDICT && sa[is + STEPPED] == 0.0;
-        if (STAGE == CORRECT || unstepped)    // a selection in the vectorised predictor
-          for (int c = 0; c < 3; ++c) r.acc[c] = ftm * f[ix + c];
-        GRANSPH::Regime regime;
-        if (STAGE == PREDICT) {
-          if (EXTRAPOLATE) {    // from the last two mid-points, which PREV then holds
-            const GRANSPH::StepRates e = GRANSPH::extrapolated(
-                r, rates_of(ra, ir + PREV), ra[ir + RATES_DT], ra[ir + PREV + RATES_DT]);
-            r = GRANSPH::select(sa[is + STEPPED] >= 2.0, e, r);
-            for (int c = 0; c < PREV; ++c) ra[ir + PREV + c] = ra[ir + c];
-          }
-          GRANSPH::predict(m, p, s, r, dt, regime);
-          for (int c = 0; c < 3; ++c) sa[is + V_START + c] = s.v[c];
-          sa[is + RHO_START] = s.rho;
-          s.sigma.store(sa, is + SIGMA_START);
-        } else {
-          GRANSPH::correct(m, p, s, r, dt, regime);
-          for (int c = 0; c < 3; ++c) ra[ir + ACC + c] = r.acc[c];
-          if (EXTRAPOLATE) ra[ir + RATES_DT] = dt;
-          const double stepped = sa[is + STEPPED] + 1.0;
-          sa[is + STEPPED] = stepped < 2.0 ? stepped : 2.0;
-        }
-        for (int c = 0; c < 3; ++c) {
-          x[ix + c] = p.x[c];
-          v[ix + c] = p.v[c];
-        }
-        st[ist + RHO] = p.rho;
-        p.sigma.store(st, ist + SIGMA);
-        st[ist + REGIME] = regime;
-        if (STAGE == CORRECT) bad += GRANSPH::bad_state(p);
-      }
-      return bad;
-    }
-  };
-
-  // the rates in the columns from `at` of the array of all rows
-  static GRANSPH::StepRates rates_of(const double *r, int at)
-  {
-    return {{r[at + ACC], r[at + ACC + 1], r[at + ACC + 2]}, r[at + DRHO],
-            GRANSPH::Sym3::load(r, at + STRAIN), GRANSPH::Spin3::load(r, at + SPIN)};
+                       [](const auto &advance) { return advance(0, advance.n); });
   }
 };
 

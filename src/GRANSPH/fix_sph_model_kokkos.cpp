@@ -23,73 +23,44 @@ using FSI = FixSPHIntegrate;
 
 namespace {
 
-// One predictor (PREDICT) or corrector step of every granular particle.
-template <class DeviceType, class Model, bool PREDICT> struct StepFunctor {
+// The rows the grains' step reads and writes (GRANSPH::step_grain) on the device: the
+// loop's k-th atom is atom k
+template <class DeviceType> struct DeviceGrainRows {
   typedef GRANSPHCompat::KokkosTypes<DeviceType> KT;
-  Model model;
   typename KT::t_x x;
   typename KT::t_v v;
   typename KT::t_f_const f;
-  typename KT::t_int_const mask, type;
-  typename KT::t_mass_const rmass, mass;
   typename KT::t_state state, rates, start;
-  int groupbit, use_rmass, extrapolate;
+  typename KT::t_int_const type;
+  typename KT::t_mass_const rmass, type_mass;
+  int use_rmass;
+
+  KOKKOS_INLINE_FUNCTION int atom(int k) const { return k; }
+  KOKKOS_INLINE_FUNCTION double mass(int k) const { return use_rmass ? rmass(k) : type_mass(type(k)); }
+};
+
+// One predictor or corrector step of every granular particle
+template <class DeviceType, class Model, GRANSPH::Stage STAGE, bool EXTRAPOLATE>
+struct StepFunctor {
+  Model model;
+  DeviceGrainRows<DeviceType> rows;
+  typename GRANSPHCompat::KokkosTypes<DeviceType>::t_int_const mask;
+  int groupbit;
   double dt, ftm2v;
 
-  // the rates in the columns from `at` of atom i's row (as FixSPHModel::rates_of)
-  KOKKOS_INLINE_FUNCTION GRANSPH::StepRates rates_at(int i, int at) const
+  // whether atom i is a grain that the corrector left with a bad state
+  KOKKOS_INLINE_FUNCTION int step(const int i) const
   {
-    constexpr int D = FSI::STRAIN, W = FSI::SPIN, A = FSI::ACC;
-    return {{rates(i, at + A), rates(i, at + A + 1), rates(i, at + A + 2)},
-            rates(i, at + FSI::DRHO),
-            {rates(i, at + D), rates(i, at + D + 1), rates(i, at + D + 2), rates(i, at + D + 3),
-             rates(i, at + D + 4), rates(i, at + D + 5)},
-            {rates(i, at + W), rates(i, at + W + 1), rates(i, at + W + 2)}};
+    return (mask(i) & groupbit) ? GRANSPH::step_grain<STAGE, EXTRAPOLATE>(model, rows, i, dt, ftm2v)
+                                : 0;
   }
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { step(i); }
+};
 
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
-  {
-    using namespace GRANSPH;
-    if (!(mask(i) & groupbit)) return;
-    constexpr int S = FSI::SIGMA, SS = FSI::SIGMA_START;
-    const double ftm = ftm2v / (use_rmass ? rmass(i) : mass(type(i)));
-    ParticleState p{{x(i, 0), x(i, 1), x(i, 2)}, {v(i, 0), v(i, 1), v(i, 2)}, state(i, FSI::RHO),
-                    {state(i, S), state(i, S + 1), state(i, S + 2), state(i, S + 3),
-                     state(i, S + 4), state(i, S + 5)}};
-    StepStart s{{start(i, FSI::V_START), start(i, FSI::V_START + 1), start(i, FSI::V_START + 2)},
-                start(i, FSI::RHO_START),
-                {start(i, SS), start(i, SS + 1), start(i, SS + 2), start(i, SS + 3),
-                 start(i, SS + 4), start(i, SS + 5)}};
-    const bool stored = PREDICT && start(i, FSI::STEPPED) != 0.0;    // as FixSPHModel
-    StepRates r = rates_at(i, 0);
-    if (!stored)
-      for (int a = 0; a < 3; ++a) r.acc[a] = ftm * f(i, a);
-    Regime regime;
-    if (PREDICT) {
-      if (extrapolate) {
-        if (start(i, FSI::STEPPED) >= 2.0)
-          r = extrapolated(r, rates_at(i, FSI::PREV), rates(i, FSI::RATES_DT),
-                           rates(i, FSI::PREV + FSI::RATES_DT));
-        for (int k = 0; k < FSI::PREV; ++k) rates(i, FSI::PREV + k) = rates(i, k);
-      }
-      predict(model, p, s, r, dt, regime);
-      for (int a = 0; a < 3; ++a) start(i, FSI::V_START + a) = s.v[a];
-      start(i, FSI::RHO_START) = s.rho;
-      s.sigma.store(&start(i, SS));
-    } else {
-      correct(model, p, s, r, dt, regime);
-      for (int a = 0; a < 3; ++a) rates(i, FSI::ACC + a) = r.acc[a];
-      if (extrapolate) rates(i, FSI::RATES_DT) = dt;
-      start(i, FSI::STEPPED) = fmin(start(i, FSI::STEPPED) + 1.0, 2.0);
-    }
-    for (int a = 0; a < 3; ++a) {
-      x(i, a) = p.x[a];
-      v(i, a) = p.v[a];
-    }
-    state(i, FSI::RHO) = p.rho;
-    p.sigma.store(&state(i, S));
-    state(i, FSI::REGIME) = regime;
-  }
+// A step as a reduction: the count of grains left with a bad state
+template <class Step> struct CountingBadStates {
+  Step s;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, int &bad) const { bad += s.step(i); }
 };
 
 }    // namespace
@@ -160,13 +131,13 @@ template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Mode
 template <class DeviceType, class Model>
 void FixSPHModelKokkos<DeviceType, Model>::initial_integrate(int)
 {
-  step(FixSPHModel<Model>::PREDICT);
+  step(GRANSPH::PREDICT);
 }
 
 template <class DeviceType, class Model>
 void FixSPHModelKokkos<DeviceType, Model>::final_integrate()
 {
-  if (step(FixSPHModel<Model>::CORRECT)) {
+  if (step(GRANSPH::CORRECT)) {
     // find and name the atom on the host; this only happens once, on failure
     this->atomKK->sync(Host, X_MASK | V_MASK | MASK_MASK | TAG_MASK);
     sync_host();
@@ -177,40 +148,39 @@ void FixSPHModelKokkos<DeviceType, Model>::final_integrate()
 // the predictor or corrector step; the number of grains with a bad new state (corrector)
 template <class DeviceType, class Model> int FixSPHModelKokkos<DeviceType, Model>::step(int stage)
 {
-  if (this->execution_space == Host) return step_on_host(stage);
-  step_on_device(stage);
-  return stage == FixSPHModel<Model>::CORRECT ? count_bad_states() : 0;
+  const auto s = static_cast<GRANSPH::Stage>(stage);
+  return this->execution_space == Host ? step_on_host(s) : step_on_device(s);
 }
 
 // On the host, the plain fix's loop over the grains (the same arithmetic, vectorised) in
 // parallel chunks
 template <class DeviceType, class Model>
-int FixSPHModelKokkos<DeviceType, Model>::step_on_host(int stage)
+int FixSPHModelKokkos<DeviceType, Model>::step_on_host(GRANSPH::Stage stage)
 {
   constexpr int CHUNK = 256;
   this->atomKK->sync(Host, this->datamask_read);
   sync_host();
-  const int bad = this->step_grains(
-      static_cast<typename FixSPHModel<Model>::Stage>(stage), this->atom->x, this->atom->v,
-      this->atom->f, [](const auto &advance) {
-        const int n = advance.a.n;
-        int count = 0;
-        Kokkos::parallel_reduce(
-            ParticlePolicy<LMPHostType>(0, (n + CHUNK - 1) / CHUNK),
-            [&](const int c, int &sum) {
-              const int end = (c + 1) * CHUNK;
-              sum += advance(c * CHUNK, end < n ? end : n);
-            },
-            count);
-        return count;
-      });
+  const int bad = this->step_grains(stage, this->atom->x, this->atom->v, this->atom->f,
+                                    [](const auto &advance) {
+                                      const int n = advance.n;
+                                      int count = 0;
+                                      Kokkos::parallel_reduce(
+                                          ParticlePolicy<LMPHostType>(0, (n + CHUNK - 1) / CHUNK),
+                                          [&](const int c, int &sum) {
+                                            const int end = (c + 1) * CHUNK;
+                                            sum += advance(c * CHUNK, end < n ? end : n);
+                                          },
+                                          count);
+                                      return count;
+                                    });
   this->atomKK->modified(Host, this->datamask_modify);
   modified_host();
   return bad;
 }
 
+// the step's kernel; the corrector's is a reduction that counts the grains with a bad state
 template <class DeviceType, class Model>
-void FixSPHModelKokkos<DeviceType, Model>::step_on_device(int stage)
+int FixSPHModelKokkos<DeviceType, Model>::step_on_device(GRANSPH::Stage stage)
 {
   AtomKokkos *atomKK = this->atomKK;
   atomKK->sync(this->execution_space, this->datamask_read);
@@ -218,62 +188,43 @@ void FixSPHModelKokkos<DeviceType, Model>::step_on_device(int stage)
   k_rates.template sync<DeviceType>();
   k_start.template sync<DeviceType>();
 
-  const bool predict = stage == FixSPHModel<Model>::PREDICT;
-  auto run = [&](auto functor) {
-    functor.model = this->model;
-    functor.x = atomKK->k_x.template view<DeviceType>();
-    functor.v = atomKK->k_v.template view<DeviceType>();
-    functor.f = atomKK->k_f.template view<DeviceType>();
-    functor.mask = atomKK->k_mask.template view<DeviceType>();
-    functor.type = atomKK->k_type.template view<DeviceType>();
-    functor.rmass = atomKK->k_rmass.template view<DeviceType>();
-    functor.mass = atomKK->k_mass.template view<DeviceType>();
-    functor.state = k_state.template view<DeviceType>();
-    functor.rates = k_rates.template view<DeviceType>();
-    functor.start = k_start.template view<DeviceType>();
-    functor.groupbit = this->groupbit;
-    functor.use_rmass = this->atom->rmass != nullptr;
-    functor.extrapolate = this->predictor_extrapolated;
-    functor.dt = this->update->dt;
-    functor.ftm2v = this->force->ftm2v;
-    Kokkos::parallel_for(
-        ParticlePolicy<DeviceType>(0, this->atom->nlocal, Kokkos::ChunkSize(256)), functor);
+  const DeviceGrainRows<DeviceType> rows{atomKK->k_x.template view<DeviceType>(),
+                                         atomKK->k_v.template view<DeviceType>(),
+                                         atomKK->k_f.template view<DeviceType>(),
+                                         k_state.template view<DeviceType>(),
+                                         k_rates.template view<DeviceType>(),
+                                         k_start.template view<DeviceType>(),
+                                         atomKK->k_type.template view<DeviceType>(),
+                                         atomKK->k_rmass.template view<DeviceType>(),
+                                         atomKK->k_mass.template view<DeviceType>(),
+                                         this->atom->rmass != nullptr};
+  const auto mask = atomKK->k_mask.template view<DeviceType>();
+  const int groupbit = this->groupbit;
+  const double dt = this->update->dt, ftm2v = this->force->ftm2v;
+  const ParticlePolicy<DeviceType> atoms(0, this->atom->nlocal, Kokkos::ChunkSize(256));
+  int bad = 0;
+  const auto run = [&](auto functor) {
+    if (stage == GRANSPH::PREDICT)
+      Kokkos::parallel_for(atoms, functor);    // no reduction, which would wait for a device
+    else
+      Kokkos::parallel_reduce(atoms, CountingBadStates<decltype(functor)>{functor}, bad);
   };
-  if (predict)
-    run(StepFunctor<DeviceType, Model, true>());
+  const bool extrapolate = this->predictor_extrapolated;
+  using GRANSPH::CORRECT;
+  using GRANSPH::PREDICT;
+  if (stage == PREDICT && extrapolate)
+    run(StepFunctor<DeviceType, Model, PREDICT, true>{this->model, rows, mask, groupbit, dt, ftm2v});
+  else if (stage == PREDICT)
+    run(StepFunctor<DeviceType, Model, PREDICT, false>{this->model, rows, mask, groupbit, dt, ftm2v});
+  else if (extrapolate)
+    run(StepFunctor<DeviceType, Model, CORRECT, true>{this->model, rows, mask, groupbit, dt, ftm2v});
   else
-    run(StepFunctor<DeviceType, Model, false>());
+    run(StepFunctor<DeviceType, Model, CORRECT, false>{this->model, rows, mask, groupbit, dt, ftm2v});
 
   atomKK->modified(this->execution_space, this->datamask_modify);
   k_state.template modify<DeviceType>();
   k_start.template modify<DeviceType>();
-  if (!predict || this->predictor_extrapolated) k_rates.template modify<DeviceType>();
-}
-
-// non-finite states or non-positive densities among this rank's granular particles (the
-// device's step; on the host the corrector's loop counts them)
-template <class DeviceType, class Model>
-int FixSPHModelKokkos<DeviceType, Model>::count_bad_states()
-{
-  auto x = this->atomKK->k_x.template view<DeviceType>();
-  auto v = this->atomKK->k_v.template view<DeviceType>();
-  auto mask = this->atomKK->k_mask.template view<DeviceType>();
-  auto state = k_state.template view<DeviceType>();
-  const int groupbit = this->groupbit;
-  int bad = 0;
-  Kokkos::parallel_reduce(
-      Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
-      LAMMPS_LAMBDA(const int i, int &count) {
-        if (!(mask(i) & groupbit)) return;
-        const GRANSPH::ParticleState p{
-            {x(i, 0), x(i, 1), x(i, 2)},
-            {v(i, 0), v(i, 1), v(i, 2)},
-            state(i, FSI::RHO),
-            {state(i, FSI::SIGMA), state(i, FSI::SIGMA + 1), state(i, FSI::SIGMA + 2),
-             state(i, FSI::SIGMA + 3), state(i, FSI::SIGMA + 4), state(i, FSI::SIGMA + 5)}};
-        if (GRANSPH::bad_state(p)) ++count;
-      },
-      bad);
+  if (stage == CORRECT || extrapolate) k_rates.template modify<DeviceType>();
   return bad;    // local: the rank that has one stops the run (error->one), no collective
 }
 

@@ -52,9 +52,8 @@ class FixSPHModelKokkos : public FixSPHModel<Model>, public KokkosBase, public S
 
   // device kernels (public: CUDA lambdas may not live in private members)
   int step(int stage);
-  int step_on_host(int stage);
-  void step_on_device(int stage);
-  int count_bad_states();
+  int step_on_host(GRANSPH::Stage stage);
+  int step_on_device(GRANSPH::Stage stage);
   void reset_cfl_timestep() override;
 
  private:

@@ -74,20 +74,17 @@ void FixSPHMove::init()
   check_not_granular();
 }
 
-// the atoms a GRANSPH integrator integrates must not be moved by this fix too
+// the atoms the GRANSPH integrator integrates must not be moved by this fix too
 void FixSPHMove::check_not_granular() const
 {
-  for (int i = 0; i < modify->nfix; ++i) {
-    const auto *integrator = dynamic_cast<FixSPHIntegrate *>(modify->fix[i]);
-    if (!integrator) continue;
-    int local = 0, any = 0;
-    for (int k = 0; k < atom->nlocal && !local; ++k)
-      local = (atom->mask[k] & groupbit) && (atom->mask[k] & integrator->groupbit);
-    MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, world);
-    if (any)
-      error->all(FLERR, "Fix sph/move: group {} has atoms that fix {} integrates",
-                 group->names[igroup], integrator->id);
-  }
+  const FixSPHIntegrate &integrator = FixSPHIntegrate::find(lmp, "Fix sph/move");
+  int local = 0, any = 0;
+  for (int k = 0; k < atom->nlocal && !local; ++k)
+    local = (atom->mask[k] & groupbit) && (atom->mask[k] & integrator.groupbit);
+  MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, world);
+  if (any)
+    error->all(FLERR, "Fix sph/move: group {} has atoms that fix {} integrates",
+               group->names[igroup], integrator.id);
 }
 
 void FixSPHMove::evaluate(double *u)

@@ -23,7 +23,7 @@ template <> struct VectorisedStep<GRANSPH::PhaseChange> {
   static constexpr bool value = false;
 };
 using FixSPHPhaseChange = FixSPHModel<GRANSPH::PhaseChange>;
-// instantiated once, in fix_sph_model.cpp: a small unit, in which the compiler inlines the
+// instantiated once, in fix_sph_phasechange.cpp: a small unit, in which the compiler inlines the
 // model into the step's loop and vectorises it
 extern template class FixSPHModel<GRANSPH::PhaseChange>;
 

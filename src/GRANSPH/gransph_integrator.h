@@ -23,6 +23,7 @@
 #define LMP_GRANSPH_INTEGRATOR_H
 
 #include "gransph_pair_terms.h"
+#include "gransph_state.h"
 #include "gransph_stress_model.h"
 
 namespace GRANSPH {
@@ -126,6 +127,86 @@ KOKKOS_INLINE_FUNCTION bool bad_state(const ParticleState &p)
 KOKKOS_INLINE_FUNCTION double cfl_density(double rho_min, double rho_ref, bool reference)
 {
   return reference ? rho_ref : rho_min;
+}
+
+/* ----------------------------------------------------------------------
+   One grain's predictor or corrector step, written once for the plain
+   integrators (a vectorised loop over the grains) and their Kokkos twins (a
+   kernel over the atoms), over `rows`, an accessor of the per-atom rows with
+
+     int    atom(int k)        the atom index of the loop's k-th grain
+     double mass(int k)        its mass
+     x, v, f                   LAMMPS' positions, velocities, forces, and
+     state, rates, start       the integrator's arrays (StateLayout's columns),
+                               each callable as (i, c) for atom i's column c
+
+   `ftm2v` converts force / mass to an acceleration. Returns whether the corrector
+   left the grain with a bad state (bad_state: the run stops), 0 for the predictor.
+   Without a branch on the grain's values: a lane's choices are selections.
+------------------------------------------------------------------------- */
+
+enum Stage { PREDICT, CORRECT };
+
+// the rates in the columns from `at` of atom i's row of rates
+template <class Column> KOKKOS_INLINE_FUNCTION StepRates rates_at(const Column &r, int i, int at)
+{
+  using L = StateLayout;
+  return {{r(i, at + L::ACC), r(i, at + L::ACC + 1), r(i, at + L::ACC + 2)},
+          r(i, at + L::DRHO),
+          sym3_at(r, i, at + L::STRAIN),
+          {r(i, at + L::SPIN), r(i, at + L::SPIN + 1), r(i, at + L::SPIN + 2)}};
+}
+
+template <Stage STAGE, bool EXTRAPOLATE, class Model, class Rows>
+KOKKOS_INLINE_FUNCTION int step_grain(const Model &m, const Rows &rows, int k, double dt,
+                                      double ftm2v)
+{
+  using L = StateLayout;
+  const int i = rows.atom(k);
+  const double ftm = ftm2v / rows.mass(k);
+  ParticleState p{{rows.x(i, 0), rows.x(i, 1), rows.x(i, 2)},
+                  {rows.v(i, 0), rows.v(i, 1), rows.v(i, 2)},
+                  rows.state(i, L::RHO),
+                  sym3_at(rows.state, i, L::SIGMA)};
+  StepStart s{{rows.start(i, L::V_START), rows.start(i, L::V_START + 1),
+               rows.start(i, L::V_START + 2)},
+              rows.start(i, L::RHO_START),
+              sym3_at(rows.start, i, L::SIGMA_START)};
+  // the predictor takes the acceleration of the last step's mid-point, which the corrector
+  // kept, or a grain without a step that of the setup evaluation; the corrector that of
+  // this evaluation
+  StepRates r = rates_at(rows.rates, i, 0);
+  const bool unstepped = STAGE == PREDICT && rows.start(i, L::STEPPED) == 0.0;
+  if (STAGE == CORRECT || unstepped)
+    for (int c = 0; c < 3; ++c) r.acc[c] = ftm * rows.f(i, c);
+  Regime regime;
+  if (STAGE == PREDICT) {
+    if (EXTRAPOLATE) {    // from the last two mid-points, which PREV then holds
+      const StepRates e = extrapolated(r, rates_at(rows.rates, i, L::PREV),
+                                       rows.rates(i, L::RATES_DT),
+                                       rows.rates(i, L::PREV + L::RATES_DT));
+      r = select(rows.start(i, L::STEPPED) >= 2.0, e, r);
+      for (int c = 0; c < L::PREV; ++c) rows.rates(i, L::PREV + c) = rows.rates(i, c);
+    }
+    predict(m, p, s, r, dt, regime);
+    for (int c = 0; c < 3; ++c) rows.start(i, L::V_START + c) = s.v[c];
+    rows.start(i, L::RHO_START) = s.rho;
+    store_sym3(s.sigma, rows.start, i, L::SIGMA_START);
+  } else {
+    correct(m, p, s, r, dt, regime);
+    for (int c = 0; c < 3; ++c) rows.rates(i, L::ACC + c) = r.acc[c];
+    if (EXTRAPOLATE) rows.rates(i, L::RATES_DT) = dt;
+    const double stepped = rows.start(i, L::STEPPED) + 1.0;
+    rows.start(i, L::STEPPED) = stepped < 2.0 ? stepped : 2.0;
+  }
+  for (int c = 0; c < 3; ++c) {
+    rows.x(i, c) = p.x[c];
+    rows.v(i, c) = p.v[c];
+  }
+  rows.state(i, L::RHO) = p.rho;
+  store_sym3(p.sigma, rows.state, i, L::SIGMA);
+  rows.state(i, L::REGIME) = regime;
+  return STAGE == CORRECT ? bad_state(p) : 0;
 }
 
 // Eq. 19: dt = C min(sqrt(h / max|a|), h / max c).

@@ -15,7 +15,7 @@
 
 #include "atom.h"
 #include "comm.h"
-#include "compute_sph_visc_atom.h"
+#include "compute.h"
 #include "domain.h"
 #include "error.h"
 #include "fix_sph_integrate.h"
@@ -42,21 +42,27 @@ namespace {
 constexpr int SLIDE = GRANSPH::SLIDE_VALUES;
 
 
-// Host accessor for the shared neighbour sums (gransph_neighbour_sums.h), over the
-// particles as Particle holds them (PairParticle, or PairParticleSingle for the grains'
-// sums under `precision mixed`).
-template <class Particle> struct HostParticlesOf {
-  using Real = decltype(Particle::rho);
-  const Particle *particles;
+// The atoms as the shared neighbour sums read them (gransph_neighbour_sums.h): their
+// neighbour rows, roles and wall arrays
+struct HostAtoms {
   int **firstneigh;
   const int *numneigh, *mask;
   int granularbit, wallbit;
-  GRANSPH::WendlandC2 kernel;
-  GRANSPH::Viscosity visc;
-  bool wall_normal, shape_sums, wall_friction;
   const double *normals;    // 3 per atom, with wall_normal or wall_friction
   const double *friction_mu, *friction_slide;    // 1 and 4 per atom, with wall_friction
-  GRANSPH::WallStick stick;                       // with wall_friction
+};
+
+// Host accessor for the shared neighbour sums, over the particles as Particle holds them
+// (PairParticle, or PairParticleSingle for the grains' sums under `precision mixed`).
+template <class Particle> struct HostParticlesOf : GRANSPH::SumOptions, HostAtoms {
+  using Real = decltype(Particle::rho);
+  const Particle *particles;
+
+  HostParticlesOf(const GRANSPH::SumOptions &options, const HostAtoms &atoms,
+                  const Particle *particles) :
+      GRANSPH::SumOptions(options), HostAtoms(atoms), particles(particles)
+  {
+  }
 
   struct NeighbourRow {
     const int *row;
@@ -77,9 +83,7 @@ template <class Particle> struct HostParticlesOf {
   HostParticlesOf<GRANSPH::PairParticleSingle>
   in_single(const GRANSPH::PairParticleSingle *single) const
   {
-    return {single,      firstneigh, numneigh, mask,      granularbit,   wallbit,
-            kernel,      visc,       wall_normal, shape_sums, wall_friction, normals,
-            friction_mu, friction_slide, stick};
+    return {*this, *this, single};
   }
 };
 using HostParticles = HostParticlesOf<PairParticle>;
@@ -89,10 +93,7 @@ using HostParticles = HostParticlesOf<PairParticle>;
 /* ---------------------------------------------------------------------- */
 
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
-    Pair(lmp), h(0.0), visc{DEFAULT_ALPHA, DEFAULT_BETA, false, GRANSPH::Viscosity::BULK, 0.0},
-    corrected_gradient(0), wall_normal(0), wall_stress_mode(GRANSPH::WallSums::RATIO),
-    mixed_precision(0), warned_far_from_origin(false), wall_hold_stick(0),
-    prune(DEFAULT_PRUNE), integrator(nullptr), pruned_nall(-1),
+    Pair(lmp), c0(0.0), warned_far_from_origin(false), integrator(nullptr), pruned_nall(-1),
     viscous_pressure_step(-1), viscous_pressure_nlocal(0), nmax(0),
     particles(nullptr),
     particles_single(nullptr), normals(nullptr), friction(nullptr), slide(nullptr)
@@ -128,11 +129,12 @@ void PairSPHGranular::compute(int eflag, int vflag)
   FixSPHIntegrate &fix = *integrator;
   const int nall = atom->nlocal + atom->nghost;
   fix.forward_comm_state();
-  const bool limited = fix.wallbit && !friction_walls.empty();
+  const bool limited = fix.wallbit && config.has_friction_walls();
+  const bool wall_normal = config.wall_normal;
   // wall/gradient normal, wall/friction or precision mixed may be set by a pair_style
   // issued again after the arrays grew
   const bool grown = nall > nmax || ((wall_normal || limited) && !normals) ||
-      (limited && !friction) || (mixed_precision && !particles_single);
+      (limited && !friction) || (config.mixed_precision && !particles_single);
   if (grown) grow(atom->nmax);
   pack_particles(0, nall);
   // normals and frictions follow the atoms, which change places only at a run's setup or
@@ -143,29 +145,17 @@ void PairSPHGranular::compute(int eflag, int vflag)
     if (limited) unnormalled = pack_wall_friction(friction, normals, nall);
   }
   if (limited && update->setupflag) stop_if_unnormalled(unnormalled);
-  const HostParticles listed{particles,
-                        list->firstneigh,
-                        list->numneigh,
-                        atom->mask,
-                        fix.groupbit,
-                        fix.wallbit,
-                        GRANSPH::WendlandC2::make(h, domain->dimension),
-                        visc,
-                        wall_normal != 0,
-                        corrected_gradient != 0,
-                        limited,
-                        normals,
-                        friction,
-                        slide,
-                        wall_stick(limited)};
-  const HostParticles p = prune > 0.0 ? pruned(listed, nall) : listed;
+  const HostAtoms atoms{list->firstneigh, list->numneigh, atom->mask, fix.groupbit, fix.wallbit,
+                        normals, friction, slide};
+  const HostParticles listed(sum_options(limited), atoms, particles);
+  const HostParticles p = config.prune > 0.0 ? pruned(listed, nall) : listed;
   if (update->setupflag) check_no_coincident(p);
   if (fix.wallbit) {
     walls(p, !limited);
     fix.forward_comm_state();
     pack_particles(atom->nlocal, nall);
   }
-  if (mixed_precision) {
+  if (config.mixed_precision) {
     if (update->setupflag) warn_if_far_from_single_origin();
     pack_particles_single(nall);
     grains(p.in_single(particles_single));
@@ -179,7 +169,7 @@ void PairSPHGranular::compute(int eflag, int vflag)
 
 double PairSPHGranular::pruned_cutsq() const
 {
-  const double cut = (2.0 + prune) * h;
+  const double cut = (2.0 + config.prune) * config.h;
   return cut * cut;
 }
 
@@ -190,7 +180,7 @@ bool PairSPHGranular::rows_outdated(int nall) const
 
 double PairSPHGranular::prune_renewal_sq() const
 {
-  const double renew = 0.5 * prune * h;
+  const double renew = 0.5 * config.prune * config.h;
   return renew * renew;
 }
 
@@ -268,7 +258,7 @@ void PairSPHGranular::stop_if_coincident(int i)
       return rsq;
     };
     int j = 0;
-    while (j < nall && (j == i || distsq(j) >= GRANSPH::coincident_rsq(h))) ++j;
+    while (j < nall && (j == i || distsq(j) >= GRANSPH::coincident_rsq(config.h))) ++j;
     what[0] = atom->tag[i];
     what[1] = j < nall ? atom->tag[j] : 0;
     for (int a = 0; a < 3; ++a) what[2 + a] = x[i][a];
@@ -295,6 +285,7 @@ void PairSPHGranular::tally_virial(int i, const double *vir)
 template <class Particles> void PairSPHGranular::walls(const Particles &p, bool with_forces)
 {
   FixSPHIntegrate &fix = *integrator;
+  const FixSPHIntegrate::HostState state = fix.host_state();
   const int inum = list->inum;
   const int *ilist = list->ilist;
   double **v = atom->v;
@@ -306,11 +297,11 @@ template <class Particles> void PairSPHGranular::walls(const Particles &p, bool 
     const int d = ilist[ii];
     if (!p.wall(d)) continue;
     double g_minus_a[3];
-    GRANSPH::wall_gravity(g, v[d], &fix.start[d][FixSPHIntegrate::WALL_V], inv_dt, g_minus_a);
-    if (stepping) fix.start[d][FixSPHIntegrate::STEPPED] = 1.0;
+    GRANSPH::wall_gravity(g, v[d], state.last_wall_velocity(d), inv_dt, g_minus_a);
+    if (stepping) state.mark_stepped(d);
     const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
-    particles[d].sigma = sums.stress(g_minus_a, wall_stress_mode);
-    particles[d].sigma.store(&fix.state[d][FixSPHIntegrate::SIGMA]);
+    particles[d].sigma = sums.stress(g_minus_a, config.wall_stress);
+    state.set_sigma(d, particles[d].sigma);
     if (with_forces) add_wall_force(p, d, sums.has_neighbours());
   }
 }
@@ -322,7 +313,7 @@ void PairSPHGranular::add_wall_force(const Particles &p, int d, bool has_grains)
 {
   double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, fd[3] = {0.0, 0.0, 0.0};
   if (has_grains) GRANSPH::wall_force(p, d, fd, vflag_either ? vir : nullptr);
-  GRANSPH::keep_or_repeat_wall_force(fd, &integrator->start[d][FixSPHIntegrate::WALL_F],
+  GRANSPH::keep_or_repeat_wall_force(fd, integrator->host_state().last_wall_force(d),
                                      repeats_last_wall_forces());
   for (int a = 0; a < 3; ++a) atom->f[d][a] += fd[a] / force->ftm2v;
   if (vflag_either) tally_virial(d, vir);
@@ -346,7 +337,7 @@ template <class Particles> void PairSPHGranular::wall_forces(const Particles &p)
 // rates of the granular particles (eqs. 6, 7, 34, 35)
 template <class Particles> void PairSPHGranular::grains(const Particles &p)
 {
-  FixSPHIntegrate &fix = *integrator;
+  const FixSPHIntegrate::HostState state = integrator->host_state();
   const int inum = list->inum;
   const int *ilist = list->ilist;
   double **f = atom->f;
@@ -358,11 +349,8 @@ template <class Particles> void PairSPHGranular::grains(const Particles &p)
     double *slides = p.wall_friction ? &slide[SLIDE * i] : nullptr;
     GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, vflag_either ? vir : nullptr, slides);
     for (int a = 0; a < 3; ++a) f[i][a] += particles[i].mass * r.acc[a] / force->ftm2v;
-    if (corrected_gradient) r.correct_gradient(dim);
-    double *fix_rates = fix.rates[i];
-    fix_rates[FixSPHIntegrate::DRHO] = r.drho;
-    r.strain().store(&fix_rates[FixSPHIntegrate::STRAIN]);
-    r.spin().store(&fix_rates[FixSPHIntegrate::SPIN]);
+    if (config.corrected_gradient) r.correct_gradient(dim);
+    state.set_rates(i, r.drho, r.strain(), r.spin());
     if (vflag_either) tally_virial(i, vir);
   }
   if (sums_viscous_pressure()) viscous_pressures(p);
@@ -412,12 +400,12 @@ void PairSPHGranular::grow(int n)
   memory->sfree(friction);
   memory->sfree(slide);
   particles = (PairParticle *) memory->smalloc(sizeof(PairParticle) * nmax, "pair:particles");
-  particles_single = mixed_precision ? (GRANSPH::PairParticleSingle *) memory->smalloc(
+  particles_single = config.mixed_precision ? (GRANSPH::PairParticleSingle *) memory->smalloc(
                                            sizeof(GRANSPH::PairParticleSingle) * nmax,
                                            "pair:particles_single")
                                      : nullptr;
-  const bool limited = !friction_walls.empty();
-  normals = wall_normal || limited
+  const bool limited = config.has_friction_walls();
+  normals = config.wall_normal || limited
       ? (double *) memory->smalloc(sizeof(double) * 3 * nmax, "pair:normals")
       : nullptr;
   friction = nullptr;
@@ -439,8 +427,9 @@ int PairSPHGranular::pack_wall_friction(double *out, const double *unit_normals,
   for (int i = 0; i < n; ++i) {
     out[i] = -1.0;
     if (!(mask[i] & wallbit)) continue;
-    for (const FrictionWall &w : friction_walls)
-      if (mask[i] & group->bitmask[w.group]) out[i] = friction_of(w);
+    for (int k = 0; k < config.nfriction; ++k)
+      if (mask[i] & group->bitmask[config.friction[k].group])
+        out[i] = friction_of(config.friction[k]);
     const double *ni = &unit_normals[3 * i];
     if (out[i] >= 0.0 && ni[0] == 0.0 && ni[1] == 0.0 && ni[2] == 0.0 && missing < 0 &&
         i < atom->nlocal)
@@ -529,18 +518,18 @@ void PairSPHGranular::check_wall_normals() const
 void PairSPHGranular::pack_particles(int from, int to)
 {
   const FixSPHIntegrate &fix = *integrator;
+  const FixSPHIntegrate::HostState state = fix.host_state();
   const int sphbits = fix.groupbit | fix.wallbit;
   const double E = fix.material.E;
+  const GRANSPH::Viscosity visc = viscosity();
   for (int i = from; i < to; ++i) {
     if (!(atom->mask[i] & sphbits)) {
       particles[i] = PairParticle::make(atom->x[i], atom->v[i], 0.0, 1.0, Sym3::zero(), 0.0);
       continue;
     }
     const double m = atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
-    const double *state = fix.state[i];
-    const double rho = state[FixSPHIntegrate::RHO];
-    particles[i] = PairParticle::make(atom->x[i], atom->v[i], m, rho,
-                                      Sym3::load(&state[FixSPHIntegrate::SIGMA]),
+    const double rho = state.rho(i);
+    particles[i] = PairParticle::make(atom->x[i], atom->v[i], m, rho, state.sigma(i),
                                       visc.sound_speed(E, rho));
   }
 }
@@ -567,7 +556,7 @@ double PairSPHGranular::single_precision_origin(double *origin) const
     origin[a] = 0.5 * (lo[a] + hi[a]);
     half_diagonal_sq += 0.25 * (hi[a] - lo[a]) * (hi[a] - lo[a]);
   }
-  return sqrt(half_diagonal_sq) + 2.0 * h;
+  return sqrt(half_diagonal_sq) + 2.0 * config.h;
 }
 
 // Collective, at a run's setup under precision mixed: once, a warning if a particle can
@@ -580,140 +569,43 @@ void PairSPHGranular::warn_if_far_from_single_origin()
   double reach = single_precision_origin(origin);
   MPI_Allreduce(&reach, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
   constexpr double FARTHEST = 1e3;    // in h: float's 6e-8 relative rounding gives 1e-4 h
-  warned_far_from_origin = largest > FARTHEST * h;
+  warned_far_from_origin = largest > FARTHEST * config.h;
   if (warned_far_from_origin && comm->me == 0)
     error->warning(FLERR,
                    "Pair style sph/granular precision mixed: particles lie up to {:.3g} h from "
                    "the origin of their single-precision positions, where single precision "
                    "rounds pair distances by more than 1e-4 h: run on more MPI ranks (smaller "
                    "sub-domains) or in double precision",
-                   largest / h);
+                   largest / config.h);
 }
-
-/* ----------------------------------------------------------------------
-   pair_style sph/granular h keyword value ...
-     visc alpha beta          Monaghan viscosity coefficients (eq. 7)
-     visc/sound paper|bulk    its sound speed: sqrt(E/rho) (eq. 19) or sqrt(K/rho0)
-     visc/walls yes|no        whether it acts between grains and dummy particles
-     gradient plain|corrected the velocity gradient of eqs. 34-35, or renormalised
-     wall/gradient full|normal  dummy neighbours enter drho and grad_v fully, or
-                              along the wall normal only
-     wall/stress paper|ratio  how eq. 8 adds the grains' weight to the dummies
-     wall/friction group rough|slip|material|delta  the friction of the walls of a dummy
-                              group: as the sand's (rough), none, or Coulomb's at the slide
-                              friction of the integrator's model or at angle delta
-     wall/friction/hold stress|stick  how those walls hold a grain below Coulomb's limit:
-                              by their dummies' stress, or as a contact (WallStick)
-     precision double|mixed   the grains' pair sums in double or single precision
-     prune margin             sum over the neighbours within (2 + margin) h, pruned from
-                              the list when an atom has moved margin h / 2 (0: the list's)
-------------------------------------------------------------------------- */
 
 void PairSPHGranular::settings(int narg, char **arg)
 {
-  if (narg < 1) error->all(FLERR, "Illegal pair_style sph/granular command: need h");
-  h = utils::numeric(FLERR, arg[0], false, lmp);
-  if (h <= 0.0) error->all(FLERR, "Pair style sph/granular: smoothing length h must be > 0");
-  // one of the words in `choices`, whose index it returns
-  auto choice = [&](int iarg, std::initializer_list<const char *> choices) {
-    if (iarg + 2 > narg) error->all(FLERR, "Pair style sph/granular: {} needs a value", arg[iarg]);
-    int index = 0;
-    for (const char *c : choices) {
-      if (strcmp(arg[iarg + 1], c) == 0) return index;
-      ++index;
-    }
-    error->all(FLERR, "Pair style sph/granular: unknown value {} of keyword {}", arg[iarg + 1],
-               arg[iarg]);
-    return -1;
-  };
-  friction_walls.clear();
-  wall_hold_stick = 0;
-  prune = DEFAULT_PRUNE;
-  int iarg = 1;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (key == "wall/friction") {
-      if (iarg + 3 > narg)
-        error->all(FLERR, "Pair style sph/granular: wall/friction needs a group and a value");
-      const int igroup = group->find(arg[iarg + 1]);
-      if (igroup < 0)
-        error->all(FLERR, "Pair style sph/granular: wall/friction group {} does not exist",
-                   arg[iarg + 1]);
-      const std::string value = arg[iarg + 2];
-      double mu = -1.0;    // rough
-      if (value == "slip")
-        mu = 0.0;
-      else if (value == "material")
-        mu = FrictionWall::MATERIAL;
-      else if (value != "rough") {
-        const double delta = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
-        if (delta < 0.0 || delta >= 90.0)
-          error->all(FLERR,
-                     "Pair style sph/granular: wall/friction of group {} must be rough, slip, "
-                     "material or an angle in [0, 90) degrees, not {}",
-                     arg[iarg + 1], value);
-        mu = tan(delta * M_PI / 180.0);
-      }
-      friction_walls.push_back({igroup, mu});
-      iarg += 3;
-      continue;
-    }
-    if (key == "prune") {
-      if (iarg + 2 > narg) error->all(FLERR, "Pair style sph/granular: prune needs a value");
-      prune = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (prune < 0.0)
-        error->all(FLERR, "Pair style sph/granular: prune must be >= 0, not {}", arg[iarg + 1]);
-      iarg += 2;
-      continue;
-    }
-    if (key == "visc") {
-      if (iarg + 3 > narg) error->all(FLERR, "Pair style sph/granular: visc needs alpha and beta");
-      visc.alpha = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      visc.beta = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
-      if (visc.alpha < 0.0 || visc.beta < 0.0)
-        error->all(FLERR, "Pair style sph/granular: visc alpha and beta must be >= 0");
-      iarg += 3;
-      continue;
-    }
-    if (key == "visc/sound")
-      visc.sound = choice(iarg, {"paper", "bulk"}) ? GRANSPH::Viscosity::BULK
-                                                   : GRANSPH::Viscosity::PAPER;
-    else if (key == "visc/walls")
-      visc.walls = choice(iarg, {"no", "yes"}) == 1;
-    else if (key == "gradient")
-      corrected_gradient = choice(iarg, {"plain", "corrected"});
-    else if (key == "wall/gradient")
-      wall_normal = choice(iarg, {"full", "normal"});
-    else if (key == "wall/stress")
-      wall_stress_mode =
-          choice(iarg, {"paper", "ratio"}) ? GRANSPH::WallSums::RATIO : GRANSPH::WallSums::PAPER;
-    else if (key == "wall/friction/hold")
-      wall_hold_stick = choice(iarg, {"stress", "stick"});
-    else if (key == "precision")
-      mixed_precision = choice(iarg, {"double", "mixed"});
-    else
-      error->all(FLERR, "Pair style sph/granular: unknown keyword {}", key);
-    iarg += 2;
-  }
-  if (wall_hold_stick && friction_walls.empty())
-    error->all(FLERR,
-               "Pair style sph/granular: wall/friction/hold stick needs walls with a friction "
-               "of their own (wall/friction group delta)");
+  config = GRANSPH::PairSettings::parse(lmp, narg, arg);
 }
 
 // the friction coefficient of a wall with a friction of its own (-1 for a rough one)
-double PairSPHGranular::friction_of(const FrictionWall &w) const
+double PairSPHGranular::friction_of(const GRANSPH::FrictionWall &w) const
 {
-  return w.mu == FrictionWall::MATERIAL ? integrator->slide_friction() : w.mu;
+  return w.mu == GRANSPH::FrictionWall::MATERIAL ? integrator->slide_friction() : w.mu;
 }
 
-// how walls with a friction of their own hold the grains in this evaluation
-GRANSPH::WallStick PairSPHGranular::wall_stick(bool limited) const
+GRANSPH::Viscosity PairSPHGranular::viscosity() const
 {
-  GRANSPH::WallStick stick{limited && wall_hold_stick, {0.0, 0.0, 0.0},
+  return {config.visc_alpha, config.visc_beta, config.visc_walls, config.visc_sound, c0};
+}
+
+GRANSPH::SumOptions PairSPHGranular::sum_options(bool limited) const
+{
+  GRANSPH::WallStick stick{limited && config.hold_stick, {0.0, 0.0, 0.0},
                            GRANSPH::WallStick::STICK_DAMPING / update->dt};
   if (stick.on) integrator->gravity_vector(stick.gravity);
-  return stick;
+  return {GRANSPH::WendlandC2::make(config.h, domain->dimension),
+          viscosity(),
+          config.wall_normal,
+          config.corrected_gradient,
+          limited,
+          stick};
 }
 
 // pair_coeff I J: which types interact; the roles come from the fix groups
@@ -747,26 +639,21 @@ void PairSPHGranular::init_style()
 {
   if (!comm->ghost_velocity)
     error->all(FLERR, "Pair style sph/granular needs ghost velocities: use comm_modify vel yes");
-  integrator = nullptr;
-  for (int i = 0; i < modify->nfix; ++i)
-    if ((integrator = dynamic_cast<FixSPHIntegrate *>(modify->fix[i]))) break;
-  if (!integrator)
-    error->all(FLERR,
-               "Pair style sph/granular needs a GRANSPH integrator (fix sph/elastoplastic or "
-               "fix sph/phasechange)");
-  visc.c0 = sqrt(integrator->material.bulk_modulus() / integrator->material.rho0);
+  integrator = &FixSPHIntegrate::find(lmp, "Pair style sph/granular");
+  c0 = sqrt(integrator->material.bulk_modulus() / integrator->material.rho0);
   check_wall_normals();
-  for (const FrictionWall &w : friction_walls)
-    if (!group->names[w.group])
+  for (int k = 0; k < config.nfriction; ++k)
+    if (!group->names[config.friction[k].group])
       error->all(FLERR, "Pair style sph/granular: a wall/friction group was deleted");
-  if (!friction_walls.empty() && !integrator->wallbit)
+  if (config.has_friction_walls() && !integrator->wallbit)
     error->all(FLERR,
                "Pair style sph/granular: wall/friction needs dummy walls: the integrator fix "
                "has no walls group");
-  comm_forward = friction_walls.empty() ? 0 : SLIDE;    // how the grains slide on the walls
+  comm_forward = config.has_friction_walls() ? SLIDE : 0;    // how the grains slide on the walls
   visc_computes.clear();
   for (int i = 0; i < modify->ncompute; ++i)
-    if (auto c = dynamic_cast<ComputeSPHViscAtom *>(modify->compute[i])) visc_computes.push_back(c);
+    if (utils::strmatch(modify->compute[i]->style, "^sph/visc/atom"))
+      visc_computes.push_back(modify->compute[i]);
   viscous_pressure_step = -1;
   // a full list: each particle sums into itself alone, with no reverse communication
   GRANSPHCompat::request_full_list(neighbor, this, instance_me);
@@ -775,7 +662,7 @@ void PairSPHGranular::init_style()
 double PairSPHGranular::init_one(int i, int j)
 {
   if (setflag[i][j] == 0) error->all(FLERR, "Pair sph/granular: pair_coeff missing for types {} {}", i, j);
-  return 2.0 * h;
+  return 2.0 * config.h;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -798,103 +685,21 @@ void PairSPHGranular::read_restart(FILE *fp)
     }
 }
 
-// Files of the layout with the precision setting carry this mark before their choices,
-// where an older file has its first choice (0 or 1): so older files still read. Files
-// with the wall/friction/hold setting too carry the second mark, and those with prune
-// after the walls the third.
-constexpr int RESTART_WITH_PRECISION = -20261204, RESTART_WITH_HOLD = -20261205,
-              RESTART_WITH_PRUNE = -20261206;
-
-// the settings as h, alpha, beta, then the mark and the choices as whole numbers, the
-// walls with a friction of their own, and prune
 void PairSPHGranular::write_restart_settings(FILE *fp)
 {
-  const double values[3] = {h, visc.alpha, visc.beta};
-  const int choices[9] = {RESTART_WITH_PRUNE,
-                          visc.sound,
-                          visc.walls,
-                          corrected_gradient,
-                          wall_stress_mode,
-                          wall_normal,
-                          (int) friction_walls.size(),
-                          mixed_precision,
-                          wall_hold_stick};
-  fwrite(values, sizeof(double), 3, fp);
-  fwrite(choices, sizeof(int), 9, fp);
-  for (const FrictionWall &w : friction_walls) {
-    fwrite(&w.group, sizeof(int), 1, fp);
-    fwrite(&w.mu, sizeof(double), 1, fp);
-  }
-  fwrite(&prune, sizeof(double), 1, fp);
+  config.write_restart(fp);
 }
 
 void PairSPHGranular::read_restart_settings(FILE *fp)
 {
-  double values[3];
-  // a file without a mark: double precision; without the second: held by stress; without
-  // the third: the default prune
-  int choices[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-  int first = 0;
-  if (comm->me == 0) {
-    utils::sfread(FLERR, values, sizeof(double), 3, fp, nullptr, error);
-    utils::sfread(FLERR, &first, sizeof(int), 1, fp, nullptr, error);
-    const int count = first == RESTART_WITH_PRUNE || first == RESTART_WITH_HOLD ? 8
-        : first == RESTART_WITH_PRECISION                                      ? 7
-                                                                               : 5;
-    if (count == 5) choices[0] = first;
-    utils::sfread(FLERR, count == 5 ? choices + 1 : choices, sizeof(int), count, fp, nullptr,
-                  error);
-  }
-  MPI_Bcast(values, 3, MPI_DOUBLE, 0, world);
-  MPI_Bcast(choices, 8, MPI_INT, 0, world);
-  friction_walls.resize(choices[5]);
-  for (FrictionWall &w : friction_walls) {
-    if (comm->me == 0) {
-      utils::sfread(FLERR, &w.group, sizeof(int), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &w.mu, sizeof(double), 1, fp, nullptr, error);
-    }
-    MPI_Bcast(&w.group, 1, MPI_INT, 0, world);
-    MPI_Bcast(&w.mu, 1, MPI_DOUBLE, 0, world);
-  }
-  prune = DEFAULT_PRUNE;
-  if (comm->me == 0 && first == RESTART_WITH_PRUNE)
-    utils::sfread(FLERR, &prune, sizeof(double), 1, fp, nullptr, error);
-  MPI_Bcast(&prune, 1, MPI_DOUBLE, 0, world);
-  h = values[0];
-  visc.alpha = values[1];
-  visc.beta = values[2];
-  visc.sound = static_cast<GRANSPH::Viscosity::Sound>(choices[0]);
-  visc.walls = choices[1] != 0;
-  corrected_gradient = choices[2];
-  wall_stress_mode = static_cast<GRANSPH::WallSums::Mode>(choices[3]);
-  wall_normal = choices[4];
-  mixed_precision = choices[6];
-  wall_hold_stick = choices[7];
+  config = GRANSPH::PairSettings::read_restart(lmp, fp);
 }
 
-std::vector<double> PairSPHGranular::rate_settings() const
-{
-  std::vector<double> settings{h,
-                               visc.alpha,
-                               visc.beta,
-                               double(visc.sound),
-                               double(visc.walls),
-                               double(corrected_gradient),
-                               double(wall_stress_mode),
-                               double(wall_normal)};
-  for (const FrictionWall &w : friction_walls) {
-    settings.push_back(w.group);
-    settings.push_back(w.mu);
-  }
-  // last, and only if set: the rates of files from before the options still continue
-  if (mixed_precision) settings.push_back(-1.0);
-  if (wall_hold_stick) settings.push_back(-2.0);
-  return settings;
-}
-
+// h: the smoothing length; settings: the GRANSPH::PairSettings
 void *PairSPHGranular::extract(const char *name, int &dim)
 {
   dim = 0;
-  if (strcmp(name, "h") == 0) return (void *) &h;
+  if (strcmp(name, "h") == 0) return (void *) &config.h;
+  if (strcmp(name, "settings") == 0) return (void *) &config;
   return nullptr;
 }

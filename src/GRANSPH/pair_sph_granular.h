@@ -14,7 +14,7 @@ PairStyle(sph/granular,PairSPHGranular);
 
 #include "pair.h"
 
-#include "gransph_pair_terms.h"
+#include "gransph_pair_settings.h"
 
 #include <vector>
 
@@ -39,10 +39,6 @@ class PairSPHGranular : public Pair {
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
 
-  // the settings the rates depend on: the integrator continues a run with the
-  // rates of the last step only if they are unchanged
-  std::vector<double> rate_settings() const;
-
   // The pressure the artificial viscosity adds at each owned atom (0 but at grains),
   // which compute sph/visc/atom reports: summed only in the evaluations of the steps
   // such a compute is scheduled to run on (as LAMMPS tallies per-atom energies only on
@@ -50,33 +46,16 @@ class PairSPHGranular : public Pair {
   virtual const double *viscous_pressure();
 
  protected:
-  double h;                                   // smoothing length; the kernel support is 2h
-  GRANSPH::Viscosity visc;                    // eq. 7
-  int corrected_gradient;                     // renormalise the velocity gradient
-  int wall_normal;                            // walls enter drho, grad_v along their normal
-  GRANSPH::WallSums::Mode wall_stress_mode;   // eq. 8
-  int mixed_precision;                        // the grains' pair sums in single precision
-  bool warned_far_from_origin;                // of single-precision positions, once
-  // walls with a friction of their own (wall/friction): the dummies of group `group`
-  // (an index into LAMMPS' groups) limit the grains' tangential force at mu times the
-  // normal one, mu = tan(delta) (0: slip); the last entry that holds a dummy counts
-  // (-1: rough; MATERIAL: the slide friction of the integrator's model)
-  struct FrictionWall {
-    static constexpr double MATERIAL = -2.0;
-    int group;
-    double mu;
-  };
-  double friction_of(const FrictionWall &w) const;
-  std::vector<FrictionWall> friction_walls;
-  int wall_hold_stick;    // wall/friction/hold stick: those walls hold grains as contacts
-  // prune: the sums run over rows pruned from LAMMPS' list to the neighbours within
-  // (2 + prune) h, made again when an atom has moved prune h / 2 (0: LAMMPS' rows)
-  double prune;
+  GRANSPH::PairSettings config;    // parsed from the defaults by each pair_style command
+  double c0;                         // the viscosity's sqrt(K / rho0) of the material
+  bool warned_far_from_origin;       // of single-precision positions, once
   FixSPHIntegrate *integrator;
 
-  // defaults of visc, chosen by the convergence study (doc/pair_sph_granular.rst), and of
-  // prune, by measurement (bench/README.md)
-  static constexpr double DEFAULT_ALPHA = 0.25, DEFAULT_BETA = 0.0, DEFAULT_PRUNE = 0.03;
+  double friction_of(const GRANSPH::FrictionWall &w) const;
+  // what the neighbour sums read besides the particles in this evaluation (`limited`:
+  // with walls of a friction of their own)
+  GRANSPH::SumOptions sum_options(bool limited) const;
+  GRANSPH::Viscosity viscosity() const;
   double pruned_cutsq() const;
   // the rows are made anew at a run's setup, after a list build and for other atoms
   // (nall); else when an atom has moved farther than sqrt(prune_renewal_sq()) since
@@ -86,7 +65,6 @@ class PairSPHGranular : public Pair {
   int pruned_nall;    // the atoms, owned and ghost, of the last pruning (-1: none)
 
   void allocate();
-  GRANSPH::WallStick wall_stick(bool limited) const;
   void stop_if_coincident(int i);
   void tally_virial(int i, const double *vir);
   void pack_wall_normals(double *out, int n) const;
@@ -100,7 +78,7 @@ class PairSPHGranular : public Pair {
   void warn_if_far_from_single_origin();
   // the viscous-pressure diagnostic: the computes that report it, and the step of the
   // last evaluation that summed it (-1: none) with the owned atoms it summed for
-  std::vector<class ComputeSPHViscAtom *> visc_computes;
+  std::vector<class Compute *> visc_computes;
   bigint viscous_pressure_step;
   int viscous_pressure_nlocal;
   bool sums_viscous_pressure() const;    // this evaluation sums it for them

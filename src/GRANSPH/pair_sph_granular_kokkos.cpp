@@ -20,7 +20,6 @@
 #include "update.h"
 
 using namespace LAMMPS_NS;
-using FSI = FixSPHIntegrate;
 
 namespace {
 // values per grain of how it slides on walls with a friction of their own
@@ -39,9 +38,9 @@ KOKKOS_INLINE_FUNCTION void add_virial(EV_FLOAT &sum, const VirialView &vatom, b
 // Adds the force of the grains on dummy particle d (eq. 9; none without granular
 // neighbours), or the last step's kept in start (GRANSPH::keep_or_repeat_wall_force), into
 // f, and its virial into the reduction.
-template <class ForceView, class StartView, class VirialView> struct DummyForces {
+template <class ForceView, class State, class VirialView> struct DummyForces {
   ForceView f;
-  StartView start;
+  State state;
   VirialView vatom;
   double ftm2v;
   bool want_virial, want_vatom, repeat;
@@ -52,23 +51,24 @@ template <class ForceView, class StartView, class VirialView> struct DummyForces
     double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     double fd[3] = {0.0, 0.0, 0.0};
     if (has_grains) GRANSPH::wall_force(p, d, fd, want_virial ? vir : nullptr);
-    GRANSPH::keep_or_repeat_wall_force(fd, &start(d, FSI::WALL_F), repeat);
+    GRANSPH::keep_or_repeat_wall_force(fd, state.last_wall_force(d), repeat);
     for (int a = 0; a < 3; ++a) f(d, a) += fd[a] / ftm2v;
     add_virial(sum, vatom, want_vatom, d, vir);
   }
 };
 
-template <class ForceView, class StartView, class VirialView>
-DummyForces<ForceView, StartView, VirialView>
-make_dummy_forces(const ForceView &f, const StartView &start, const VirialView &vatom, double ftm2v,
+template <class ForceView, class State, class VirialView>
+DummyForces<ForceView, State, VirialView>
+make_dummy_forces(const ForceView &f, const State &state, const VirialView &vatom, double ftm2v,
                   bool want_virial, bool want_vatom, bool repeat)
 {
-  return {f, start, vatom, ftm2v, want_virial, want_vatom, repeat};
+  return {f, state, vatom, ftm2v, want_virial, want_vatom, repeat};
 }
 }    // namespace
 
 template <class DeviceType>
-PairSPHGranularKokkos<DeviceType>::PairSPHGranularKokkos(LAMMPS *lmp) : PairSPHGranular(lmp)
+PairSPHGranularKokkos<DeviceType>::PairSPHGranularKokkos(LAMMPS *lmp) :
+    PairSPHGranular(lmp), state_kk(nullptr)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -91,7 +91,8 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::init_style()
   // H200: 90 s to set up 1e5 particles). Let this init size them from its cut-off.
   if (lmp->kokkos->ngpus > 0 && neighbor->binsizeflag && neighbor->binsize_user == 0.0)
     neighbor->binsizeflag = 0;
-  if (!dynamic_cast<SPHStateKokkos *>(integrator))
+  state_kk = dynamic_cast<SPHStateKokkos *>(integrator);
+  if (!state_kk)
     error->all(FLERR, "Pair style sph/granular/kk needs the /kk variant of the GRANSPH integrator");
   int flag = 0, cols = 0;
   const bool ghosts = comm->nprocs > 1 || domain->xperiodic || domain->yperiodic ||
@@ -126,7 +127,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   atomKK->sync(execution_space, datamask_read);
 
   FixSPHIntegrate &fix = *integrator;
-  auto &kk = dynamic_cast<SPHStateKokkos &>(fix);
+  SPHStateKokkos &kk = *state_kk;
   auto k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
 
@@ -139,27 +140,20 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
         Kokkos::view_alloc(Kokkos::WithoutInitializing, "pair:particles"), atom->nmax);
   // with rows pruned since the last list build, the pack also finds how far the atoms
   // have moved since (one pass, one parallel region)
-  const bool pruned_rows_may_stay = prune > 0.0 && !rows_outdated(nall);
+  const bool pruned_rows_may_stay = config.prune > 0.0 && !rows_outdated(nall);
   const double moved_sq = pack_particles(kk, 0, nall, pruned_rows_may_stay);
 
-  DeviceParticles<DeviceType> p;
-  p.particles = d_particles;
-  p.neighbors = k_list->d_neighbors;
-  p.numneigh = k_list->d_numneigh;
-  p.mask = atomKK->k_mask.template view<DeviceType>();
-  p.granularbit = fix.groupbit;
-  p.wallbit = fix.wallbit;
-  p.kernel = GRANSPH::WendlandC2::make(h, domain->dimension);
-  p.visc = visc;
-  p.wall_normal = wall_normal != 0;
-  p.shape_sums = corrected_gradient != 0;
-  const bool limited = fix.wallbit && !friction_walls.empty();
-  p.wall_friction = limited;
-  p.stick = wall_stick(limited);
-  if (wall_normal || limited) {
+  const bool limited = fix.wallbit && config.has_friction_walls();
+  DeviceAtoms<DeviceType> atoms;
+  atoms.neighbors = k_list->d_neighbors;
+  atoms.numneigh = k_list->d_numneigh;
+  atoms.mask = atomKK->k_mask.template view<DeviceType>();
+  atoms.granularbit = fix.groupbit;
+  atoms.wallbit = fix.wallbit;
+  if (config.wall_normal || limited) {
     const int unnormalled = update_wall_normals(nall, limited);
     if (limited && update->setupflag) stop_if_unnormalled(unnormalled);
-    p.normals = k_normals.template view<DeviceType>();
+    atoms.normals = k_normals.template view<DeviceType>();
   }
   if (limited) {
     if ((int) k_slide.extent(0) < SLIDE * nall) {
@@ -169,11 +163,12 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
       k_slide.template modify<LMPHostType>();
     }
     k_slide.template sync<DeviceType>();
-    p.friction_mu = k_friction.template view<DeviceType>();
-    p.friction_slide = k_slide.template view<DeviceType>();
+    atoms.friction_mu = k_friction.template view<DeviceType>();
+    atoms.friction_slide = k_slide.template view<DeviceType>();
   }
+  DeviceParticles<DeviceType> p(sum_options(limited), atoms, d_particles);
 
-  if (prune > 0.0) prune_rows(p, nall, moved_sq);
+  if (config.prune > 0.0) prune_rows(p, nall, moved_sq);
   if (update->setupflag) {    // no two interacting particles on one place
     auto ilist = k_list->d_ilist;
     int found = -1;
@@ -194,7 +189,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
     fix.forward_comm_state();
     pack_particles(kk, nlocal, nall);
   }
-  if (mixed_precision) {
+  if (config.mixed_precision) {
     if (update->setupflag) warn_if_far_from_single_origin();
     pack_particles_single(nall);
     grains(p.in_single(d_particles_single), kk);
@@ -306,11 +301,11 @@ double PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int
   auto type = atomKK->k_type.template view<DeviceType>();
   auto rmass = atomKK->k_rmass.template view<DeviceType>();
   auto mass = atomKK->k_mass.template view<DeviceType>();
-  auto state = kk.k_state.template view<DeviceType>();
+  const auto state = kk.template state_on<DeviceType>();
   const int sphbits = integrator->groupbit | integrator->wallbit;
   const int use_rmass = atom->rmass != nullptr;
   const double E = integrator->material.E;
-  const GRANSPH::Viscosity visc = this->visc;
+  const GRANSPH::Viscosity visc = viscosity();
   const auto pack = LAMMPS_LAMBDA(const int i)
   {
     const double xi[3] = {x(i, 0), x(i, 1), x(i, 2)};
@@ -319,12 +314,9 @@ double PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int
       particles(i) = GRANSPH::PairParticle::make(xi, vi, 0.0, 1.0, GRANSPH::Sym3::zero(), 0.0);
       return;
     }
-    const GRANSPH::Sym3 sigma{state(i, FSI::SIGMA),     state(i, FSI::SIGMA + 1),
-                              state(i, FSI::SIGMA + 2), state(i, FSI::SIGMA + 3),
-                              state(i, FSI::SIGMA + 4), state(i, FSI::SIGMA + 5)};
-    const double rho = state(i, FSI::RHO);
+    const double rho = state.rho(i);
     particles(i) = GRANSPH::PairParticle::make(xi, vi, use_rmass ? rmass(i) : mass(type(i)), rho,
-                                               sigma, visc.sound_speed(E, rho));
+                                               state.sigma(i), visc.sound_speed(E, rho));
   };
   const Kokkos::RangePolicy<DeviceType> atoms(from, to);
   if (!since_pruned) {    // no reduction, which would wait for a device
@@ -347,7 +339,7 @@ double PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int
 template <class DeviceType> auto PairSPHGranularKokkos<DeviceType>::dummy_forces(SPHStateKokkos &kk)
 {
   return make_dummy_forces(atomKK->k_f.template view<DeviceType>(),
-                           kk.k_start.template view<DeviceType>(),
+                           kk.template state_on<DeviceType>(),
                            k_vatom.template view<DeviceType>(), force->ftm2v, vflag_either != 0,
                            vflag_atom != 0, repeats_last_wall_forces());
 }
@@ -361,15 +353,14 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
   auto particles = d_particles;
-  auto state = kk.k_state.template view<DeviceType>();
-  auto start = kk.k_start.template view<DeviceType>();
+  const auto state = kk.template state_on<DeviceType>();
   const auto dummy = dummy_forces(kk);
   double g[3];
   integrator->gravity_vector(g);
   const double gx = g[0], gy = g[1], gz = g[2];
   const int stepping = !update->setupflag;
   const double inv_dt = stepping ? 1.0 / update->dt : 0.0;
-  const GRANSPH::WallSums::Mode mode = wall_stress_mode;
+  const GRANSPH::WallSums::Mode mode = config.wall_stress;
   const int forces = with_forces;
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
@@ -379,11 +370,11 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
         if (!p.wall(d)) return;
         const double gd[3] = {gx, gy, gz};
         double g_minus_a[3];
-        GRANSPH::wall_gravity(gd, particles(d).v, &start(d, FSI::WALL_V), inv_dt, g_minus_a);
-        if (stepping) start(d, FSI::STEPPED) = 1.0;
+        GRANSPH::wall_gravity(gd, particles(d).v, state.last_wall_velocity(d), inv_dt, g_minus_a);
+        if (stepping) state.mark_stepped(d);
         const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
         particles(d).sigma = sums.stress(g_minus_a, mode);
-        particles(d).sigma.store(&state(d, FSI::SIGMA));
+        state.set_sigma(d, particles(d).sigma);
         if (forces) dummy.add(p, d, sums.has_neighbours(), sum);
       },
       ev);
@@ -478,12 +469,12 @@ template <class Particles>
 void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p, SPHStateKokkos &kk)
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
-  auto rates = kk.k_rates.template view<DeviceType>();
+  const auto state = kk.template state_on<DeviceType>();
   auto f = atomKK->k_f.template view<DeviceType>();
   auto vatom = k_vatom.template view<DeviceType>();
   const int want_virial = vflag_either, want_vatom = vflag_atom;
   const double ftm2v = force->ftm2v;
-  const int corrected = corrected_gradient, dim = domain->dimension;
+  const int corrected = config.corrected_gradient, dim = domain->dimension;
   const bool limited = p.wall_friction;
   auto slide = k_slide.template view<DeviceType>();
   auto particles = d_particles;
@@ -502,9 +493,7 @@ void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p, SPHStateKokko
         if (corrected) r.correct_gradient(dim);
         const double m = particles(i).mass;
         for (int a = 0; a < 3; ++a) f(i, a) += m * r.acc[a] / ftm2v;
-        rates(i, FSI::DRHO) = r.drho;
-        r.strain().store(&rates(i, FSI::STRAIN));
-        r.spin().store(&rates(i, FSI::SPIN));
+        state.set_rates(i, r.drho, r.strain(), r.spin());
         add_virial(sum, vatom, want_vatom, i, vir);
       },
       ev);

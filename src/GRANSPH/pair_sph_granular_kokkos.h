@@ -53,6 +53,7 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   void prune_rows(DeviceParticles<DeviceType> &p, int nall, double moved_sq);
 
  private:
+  SPHStateKokkos *state_kk;    // the integrator's state in DualViews (init_style)
   GRANSPHCompat::tdual_virial k_vatom;
   Kokkos::View<GRANSPH::PairParticle *, DeviceType> d_particles;    // owned and ghost atoms
   Kokkos::View<GRANSPH::PairParticleSingle *, DeviceType> d_particles_single;    // their copy

@@ -1,0 +1,93 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: every setting of pair_style sph/granular in one value type.
+
+   PairSettings is parsed from its defaults each time the style is issued (a
+   re-issued pair_style inherits nothing), compared with == (what the rates depend
+   on: same_rates), and written to restart files as one versioned record. The
+   neighbour sums read the part they need as one SumOptions value, made from the
+   settings once per evaluation and embedded whole in the host and device
+   accessors (trivially copyable: a device copy is one struct).
+------------------------------------------------------------------------- */
+
+#ifndef LMP_GRANSPH_PAIR_SETTINGS_H
+#define LMP_GRANSPH_PAIR_SETTINGS_H
+
+#include "gransph_kernel.h"
+#include "gransph_pair_terms.h"
+
+#include <cstdio>
+#include <vector>
+
+namespace LAMMPS_NS {
+class LAMMPS;
+}
+
+namespace GRANSPH {
+
+// A dummy group with a friction of its own (wall/friction GROUP value): its dummies limit
+// the grains' tangential force at mu times the normal one, mu = tan(delta) (0: slip);
+// MATERIAL: the slide friction of the integrator's model; ROUGH: as the sand.
+struct FrictionWall {
+  static constexpr double ROUGH = -1.0, MATERIAL = -2.0;
+  int group;    // an index into LAMMPS' groups
+  double mu;
+  bool operator==(const FrictionWall &o) const { return group == o.group && mu == o.mu; }
+};
+
+struct PairSettings {
+  static constexpr int MAX_FRICTION_WALLS = 32;    // LAMMPS' number of groups
+  // defaults: viscosity from the convergence study (doc/pair_sph_granular.rst), prune by
+  // measurement (bench/README.md)
+  double h = 0.0;                                          // smoothing length; support 2h
+  double visc_alpha = 0.25, visc_beta = 0.0;               // eq. 7
+  Viscosity::Sound visc_sound = Viscosity::BULK;           // visc/sound
+  bool visc_walls = false;                                 // visc/walls
+  bool corrected_gradient = false;                         // gradient corrected
+  bool wall_normal = false;                                // wall/gradient normal
+  WallSums::Mode wall_stress = WallSums::RATIO;            // wall/stress, eq. 8
+  bool mixed_precision = false;                            // precision mixed
+  bool hold_stick = false;                                 // wall/friction/hold stick
+  double prune = 0.03;                                     // prune margin in h
+  int nfriction = 0;                                       // wall/friction entries, in order:
+  FrictionWall friction[MAX_FRICTION_WALLS] = {};          // the last that holds a dummy counts
+
+  // pair_style sph/granular h keyword value ... (doc/pair_sph_granular.rst), from the
+  // defaults; stops with an error naming the keyword for bad input
+  static PairSettings parse(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg);
+
+  bool operator==(const PairSettings &o) const { return same_rates(o) && prune == o.prune; }
+  bool operator!=(const PairSettings &o) const { return !(*this == o); }
+  // whether the rates of an evaluation are the same under both (prune changes only which
+  // neighbours outside the support the sums visit)
+  bool same_rates(const PairSettings &o) const;
+
+  // The restart record: VERSION and the values, as doubles (exact for the whole numbers).
+  // from_record() stops with an error that names a version it does not know.
+  static constexpr int VERSION = 1;
+  std::vector<double> record() const;
+  static PairSettings from_record(LAMMPS_NS::LAMMPS *lmp, int version, const double *values,
+                                  int count);
+  // Collective: the record in a pair style's restart section (write: rank 0's file), and
+  // back, also from files written before the record (read_legacy_restart)
+  void write_restart(FILE *fp) const;
+  static PairSettings read_restart(LAMMPS_NS::LAMMPS *lmp, FILE *fp);
+  // the rate settings a fix's restart data held before the record (a list of doubles)
+  static PairSettings from_legacy_rates(const double *values, int count);
+
+  bool has_friction_walls() const { return nfriction > 0; }
+};
+
+// What the neighbour sums of one evaluation read besides the particles (see
+// gransph_neighbour_sums.h): the settings as the sums use them
+struct SumOptions {
+  WendlandC2 kernel;
+  Viscosity visc;
+  bool wall_normal;      // dummy neighbours enter drho and grad_v along their normal
+  bool shape_sums;       // the shape matrix of the corrected gradient
+  bool wall_friction;    // walls with a friction of their own (and dummy walls)
+  WallStick stick;       // with wall_friction: how the walls hold a grain
+};
+
+}    // namespace GRANSPH
+
+#endif
