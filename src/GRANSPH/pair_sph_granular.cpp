@@ -22,7 +22,7 @@
 #include "force.h"
 #include "group.h"
 #include "gransph_lammps_compat.h"
-#include "gransph_neighbour_sums.h"
+#include "gransph_pair_passes.h"
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
@@ -35,7 +35,6 @@
 
 using namespace LAMMPS_NS;
 using GRANSPH::PairParticle;
-using GRANSPH::Sym3;
 
 namespace {
 // values per grain of how it slides on walls with a friction of their own
@@ -291,17 +290,12 @@ template <class Particles> void PairSPHGranular::walls(const Particles &p, bool 
   double **v = atom->v;
   double g[3];
   fix.gravity_vector(g);
-  const int stepping = !update->setupflag;
-  const double inv_dt = stepping ? 1.0 / update->dt : 0.0;
+  const double inv_dt = update->setupflag ? 0.0 : 1.0 / update->dt;
   for (int ii = 0; ii < inum; ++ii) {
     const int d = ilist[ii];
     if (!p.wall(d)) continue;
-    double g_minus_a[3];
-    GRANSPH::wall_gravity(g, v[d], state.last_wall_velocity(d), inv_dt, g_minus_a);
-    if (stepping) state.mark_stepped(d);
-    const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
-    particles[d].sigma = sums.stress(g_minus_a, config.wall_stress);
-    state.set_sigma(d, particles[d].sigma);
+    const GRANSPH::WallSums sums =
+        GRANSPH::dummy_stress(p, state, d, v[d], g, inv_dt, config.wall_stress, particles[d].sigma);
     if (with_forces) add_wall_force(p, d, sums.has_neighbours());
   }
 }
@@ -311,11 +305,10 @@ template <class Particles> void PairSPHGranular::walls(const Particles &p, bool 
 template <class Particles>
 void PairSPHGranular::add_wall_force(const Particles &p, int d, bool has_grains)
 {
-  double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, fd[3] = {0.0, 0.0, 0.0};
-  if (has_grains) GRANSPH::wall_force(p, d, fd, vflag_either ? vir : nullptr);
-  GRANSPH::keep_or_repeat_wall_force(fd, integrator->host_state().last_wall_force(d),
-                                     repeats_last_wall_forces());
-  for (int a = 0; a < 3; ++a) atom->f[d][a] += fd[a] / force->ftm2v;
+  double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  GRANSPH::add_dummy_force(p, d, has_grains, integrator->host_state(),
+                           GRANSPH::HostRows<3>{atom->f[0]}, force->ftm2v,
+                           repeats_last_wall_forces(), vflag_either ? vir : nullptr);
   if (vflag_either) tally_virial(d, vir);
 }
 
@@ -340,17 +333,15 @@ template <class Particles> void PairSPHGranular::grains(const Particles &p)
   const FixSPHIntegrate::HostState state = integrator->host_state();
   const int inum = list->inum;
   const int *ilist = list->ilist;
-  double **f = atom->f;
-  const int dim = domain->dimension;
+  const GRANSPH::HostRows<3> f{atom->f[0]};
   for (int ii = 0; ii < inum; ++ii) {
     const int i = ilist[ii];
     if (!p.granular(i)) continue;
     double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    double *slides = p.wall_friction ? &slide[SLIDE * i] : nullptr;
-    GRANSPH::ParticleRates r = GRANSPH::granular_rates(p, i, vflag_either ? vir : nullptr, slides);
-    for (int a = 0; a < 3; ++a) f[i][a] += particles[i].mass * r.acc[a] / force->ftm2v;
-    if (config.corrected_gradient) r.correct_gradient(dim);
-    state.set_rates(i, r.drho, r.strain(), r.spin());
+    GRANSPH::add_grain_rates(p, i, particles[i].mass, state, f, force->ftm2v,
+                             config.corrected_gradient, domain->dimension,
+                             vflag_either ? vir : nullptr,
+                             p.wall_friction ? &slide[SLIDE * i] : nullptr);
     if (vflag_either) tally_virial(i, vir);
   }
   if (sums_viscous_pressure()) viscous_pressures(p);
@@ -513,8 +504,7 @@ void PairSPHGranular::check_wall_normals() const
                "fix property/atom d2_wall_normal 3 ghost yes");
 }
 
-// the pair data of atoms [from, to); an atom that is neither grain nor dummy massless
-// (the neighbour sums read it, and add nothing from it)
+// the pair data of atoms [from, to) (GRANSPH::pair_particle)
 void PairSPHGranular::pack_particles(int from, int to)
 {
   const FixSPHIntegrate &fix = *integrator;
@@ -522,16 +512,10 @@ void PairSPHGranular::pack_particles(int from, int to)
   const int sphbits = fix.groupbit | fix.wallbit;
   const double E = fix.material.E;
   const GRANSPH::Viscosity visc = viscosity();
-  for (int i = from; i < to; ++i) {
-    if (!(atom->mask[i] & sphbits)) {
-      particles[i] = PairParticle::make(atom->x[i], atom->v[i], 0.0, 1.0, Sym3::zero(), 0.0);
-      continue;
-    }
-    const double m = atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
-    const double rho = state.rho(i);
-    particles[i] = PairParticle::make(atom->x[i], atom->v[i], m, rho, state.sigma(i),
-                                      visc.sound_speed(E, rho));
-  }
+  for (int i = from; i < to; ++i)
+    particles[i] = GRANSPH::pair_particle(
+        atom->mask[i] & sphbits, state, i, atom->x[i], atom->v[i],
+        atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]], visc, E);
 }
 
 // the single-precision copy of atoms [0, n) for the grains' sums, with the dummies'

@@ -11,7 +11,7 @@
 #include "error.h"
 #include "fix_sph_integrate.h"
 #include "force.h"
-#include "gransph_neighbour_sums.h"
+#include "gransph_pair_passes.h"
 #include "kokkos.h"
 #include "memory_kokkos.h"
 #include "neigh_list_kokkos.h"
@@ -35,9 +35,8 @@ KOKKOS_INLINE_FUNCTION void add_virial(EV_FLOAT &sum, const VirialView &vatom, b
     for (int k = 0; k < 6; ++k) vatom(i, k) += vir[k];
 }
 
-// Adds the force of the grains on dummy particle d (eq. 9; none without granular
-// neighbours), or the last step's kept in start (GRANSPH::keep_or_repeat_wall_force), into
-// f, and its virial into the reduction.
+// Adds the force of the grains on dummy particle d (GRANSPH::add_dummy_force) into f, and
+// its virial into the reduction.
 template <class ForceView, class State, class VirialView> struct DummyForces {
   ForceView f;
   State state;
@@ -49,10 +48,8 @@ template <class ForceView, class State, class VirialView> struct DummyForces {
   KOKKOS_INLINE_FUNCTION void add(const Particles &p, int d, bool has_grains, EV_FLOAT &sum) const
   {
     double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    double fd[3] = {0.0, 0.0, 0.0};
-    if (has_grains) GRANSPH::wall_force(p, d, fd, want_virial ? vir : nullptr);
-    GRANSPH::keep_or_repeat_wall_force(fd, state.last_wall_force(d), repeat);
-    for (int a = 0; a < 3; ++a) f(d, a) += fd[a] / ftm2v;
+    GRANSPH::add_dummy_force(p, d, has_grains, state, f, ftm2v, repeat,
+                             want_virial ? vir : nullptr);
     add_virial(sum, vatom, want_vatom, d, vir);
   }
 };
@@ -310,13 +307,8 @@ double PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int
   {
     const double xi[3] = {x(i, 0), x(i, 1), x(i, 2)};
     const double vi[3] = {v(i, 0), v(i, 1), v(i, 2)};
-    if (!(mask(i) & sphbits)) {
-      particles(i) = GRANSPH::PairParticle::make(xi, vi, 0.0, 1.0, GRANSPH::Sym3::zero(), 0.0);
-      return;
-    }
-    const double rho = state.rho(i);
-    particles(i) = GRANSPH::PairParticle::make(xi, vi, use_rmass ? rmass(i) : mass(type(i)), rho,
-                                               state.sigma(i), visc.sound_speed(E, rho));
+    particles(i) = GRANSPH::pair_particle(mask(i) & sphbits, state, i, xi, vi,
+                                          use_rmass ? rmass(i) : mass(type(i)), visc, E);
   };
   const Kokkos::RangePolicy<DeviceType> atoms(from, to);
   if (!since_pruned) {    // no reduction, which would wait for a device
@@ -358,8 +350,7 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
   double g[3];
   integrator->gravity_vector(g);
   const double gx = g[0], gy = g[1], gz = g[2];
-  const int stepping = !update->setupflag;
-  const double inv_dt = stepping ? 1.0 / update->dt : 0.0;
+  const double inv_dt = update->setupflag ? 0.0 : 1.0 / update->dt;
   const GRANSPH::WallSums::Mode mode = config.wall_stress;
   const int forces = with_forces;
   EV_FLOAT ev;
@@ -369,12 +360,8 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
         const int d = ilist(ii);
         if (!p.wall(d)) return;
         const double gd[3] = {gx, gy, gz};
-        double g_minus_a[3];
-        GRANSPH::wall_gravity(gd, particles(d).v, state.last_wall_velocity(d), inv_dt, g_minus_a);
-        if (stepping) state.mark_stepped(d);
-        const GRANSPH::WallSums sums = GRANSPH::wall_sums(p, d);
-        particles(d).sigma = sums.stress(g_minus_a, mode);
-        state.set_sigma(d, particles(d).sigma);
+        const GRANSPH::WallSums sums =
+            GRANSPH::dummy_stress(p, state, d, particles(d).v, gd, inv_dt, mode, particles(d).sigma);
         if (forces) dummy.add(p, d, sums.has_neighbours(), sum);
       },
       ev);
@@ -486,14 +473,10 @@ void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p, SPHStateKokko
         if (!p.granular(i)) return;
         double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
         double s[SLIDE] = {1.0, 0.0, 0.0, 0.0};
-        GRANSPH::ParticleRates r =
-            GRANSPH::granular_rates(p, i, want_virial ? vir : nullptr, limited ? s : nullptr);
+        GRANSPH::add_grain_rates(p, i, particles(i).mass, state, f, ftm2v, corrected, dim,
+                                 want_virial ? vir : nullptr, limited ? s : nullptr);
         if (limited)
           for (int k = 0; k < SLIDE; ++k) slide(SLIDE * i + k) = s[k];
-        if (corrected) r.correct_gradient(dim);
-        const double m = particles(i).mass;
-        for (int a = 0; a < 3; ++a) f(i, a) += m * r.acc[a] / ftm2v;
-        state.set_rates(i, r.drho, r.strain(), r.spin());
         add_virial(sum, vatom, want_vatom, i, vir);
       },
       ev);

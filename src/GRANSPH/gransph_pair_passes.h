@@ -1,0 +1,79 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH: what pair_style sph/granular does for one particle in each pass of
+   an evaluation, written once for the plain style's loops and its Kokkos twin's
+   kernels: the particle's pair data, a dummy particle's stress (eq. 8) and the
+   grains' force on it (eq. 9), a grain's rates (eqs. 6, 7, 34, 35).
+
+   `Particles` is an accessor of gransph_neighbour_sums.h, `State` a
+   GRANSPH::StateAccess (gransph_state.h), `Forces` LAMMPS' forces callable as
+   f(i, a).
+------------------------------------------------------------------------- */
+
+#ifndef LMP_GRANSPH_PAIR_PASSES_H
+#define LMP_GRANSPH_PAIR_PASSES_H
+
+#include "gransph_neighbour_sums.h"
+#include "gransph_state.h"
+
+namespace GRANSPH {
+
+// The pair data of an atom: a grain's or a dummy particle's (sph), or, for an atom that is
+// neither, a massless one (the neighbour sums read it, and add nothing from it)
+template <class State>
+KOKKOS_INLINE_FUNCTION PairParticle pair_particle(bool sph, const State &state, int i,
+                                                  const double *x, const double *v, double mass,
+                                                  const Viscosity &visc, double E)
+{
+  if (!sph) return PairParticle::make(x, v, 0.0, 1.0, Sym3::zero(), 0.0);
+  const double rho = state.rho(i);
+  return PairParticle::make(x, v, mass, rho, state.sigma(i), visc.sound_speed(E, rho));
+}
+
+// Dummy particle d's stress (eq. 8) from its grains, into sigma and the state, with the
+// wall's acceleration from d's velocity v_d since the last evaluation (wall_gravity;
+// inv_dt 0 at a run's setup, which keeps that history as it is). Returns the sums.
+template <class Particles, class State>
+KOKKOS_INLINE_FUNCTION WallSums dummy_stress(const Particles &p, const State &state, int d,
+                                             const double *v_d, const double *g, double inv_dt,
+                                             WallSums::Mode mode, Sym3 &sigma)
+{
+  double g_minus_a[3];
+  wall_gravity(g, v_d, state.last_wall_velocity(d), inv_dt, g_minus_a);
+  if (inv_dt > 0.0) state.mark_stepped(d);
+  const WallSums sums = wall_sums(p, d);
+  sigma = sums.stress(g_minus_a, mode);
+  state.set_sigma(d, sigma);
+  return sums;
+}
+
+// The force of the grains on dummy particle d (eq. 9; none without granular neighbours),
+// or at the setup of a run that continues the last (repeat) the last step's, added to f;
+// its virial into vir (if not null)
+template <class Particles, class State, class Forces>
+KOKKOS_INLINE_FUNCTION void add_dummy_force(const Particles &p, int d, bool has_grains,
+                                            const State &state, const Forces &f, double ftm2v,
+                                            bool repeat, double *vir)
+{
+  double fd[3] = {0.0, 0.0, 0.0};
+  if (has_grains) wall_force(p, d, fd, vir);
+  keep_or_repeat_wall_force(fd, state.last_wall_force(d), repeat);
+  for (int a = 0; a < 3; ++a) f(d, a) += fd[a] / ftm2v;
+}
+
+// Grain i's rates into the state and its mass times its acceleration into f; its virial
+// into vir and how it slides on walls with a friction of their own into slide (each if
+// not null). corrected: the renormalised velocity gradient (in dim dimensions).
+template <class Particles, class State, class Forces>
+KOKKOS_INLINE_FUNCTION void add_grain_rates(const Particles &p, int i, double mass,
+                                            const State &state, const Forces &f, double ftm2v,
+                                            bool corrected, int dim, double *vir, double *slide)
+{
+  ParticleRates r = granular_rates(p, i, vir, slide);
+  for (int a = 0; a < 3; ++a) f(i, a) += mass * r.acc[a] / ftm2v;
+  if (corrected) r.correct_gradient(dim);
+  state.set_rates(i, r.drho, r.strain(), r.spin());
+}
+
+}    // namespace GRANSPH
+
+#endif
