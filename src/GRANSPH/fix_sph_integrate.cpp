@@ -66,7 +66,7 @@ FixSPHIntegrate &FixSPHIntegrate::find(LAMMPS *lmp, const std::string &who)
 /* ---------------------------------------------------------------------- */
 
 FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), state(nullptr), rates(nullptr), start(nullptr), wallbit(0),
+    Fix(lmp, narg, arg), wallbit(0), state(nullptr), rates(nullptr), start(nullptr),
     rho_init(0.0), cfl(0.2), cfl_sound_reference(1), predictor_extrapolated(0), nrates(RATES_DT),
     geostatic_flag(0), surface_height(0.0),
     restored(0), last_dt(0.0), ran_with_pair_settings(false), fresh_start(nullptr)

@@ -138,36 +138,36 @@ PairSettings PairSettings::parse(LAMMPS *lmp, int narg, char **arg)
 
 bool PairSettings::same_rates(const PairSettings &o) const
 {
-  if (nfriction != o.nfriction) return false;
-  for (int k = 0; k < nfriction; ++k)
-    if (!(friction[k] == o.friction[k])) return false;
-  return h == o.h && visc_alpha == o.visc_alpha && visc_beta == o.visc_beta &&
-      visc_sound == o.visc_sound && visc_walls == o.visc_walls &&
-      corrected_gradient == o.corrected_gradient && wall_normal == o.wall_normal &&
-      wall_stress == o.wall_stress && mixed_precision == o.mixed_precision &&
-      hold_stick == o.hold_stick;
+  PairSettings a = *this, b = o;
+  a.prune = b.prune = 0.0;
+  return a.record() == b.record();
 }
 
 /* ----------------------------------------------------------------------
-   the restart record, version 1: h, alpha, beta, sound, walls, gradient, wall
-   normal, wall stress, precision, hold, prune, the number of friction walls,
-   then each wall's group and mu
+   the restart record: the values of values_of() in their order, then each
+   friction wall's group and mu
 ------------------------------------------------------------------------- */
+
+namespace {
+// a record's double as the setting's type
+void assign(double &v, double x)
+{
+  v = x;
+}
+void assign(bool &v, double x)
+{
+  v = x != 0.0;
+}
+template <class Choice> void assign(Choice &v, double x)
+{
+  v = static_cast<Choice>(static_cast<int>(x));
+}
+}    // namespace
 
 std::vector<double> PairSettings::record() const
 {
-  std::vector<double> r{h,
-                        visc_alpha,
-                        visc_beta,
-                        double(visc_sound),
-                        double(visc_walls),
-                        double(corrected_gradient),
-                        double(wall_normal),
-                        double(wall_stress),
-                        double(mixed_precision),
-                        double(hold_stick),
-                        prune,
-                        double(nfriction)};
+  std::vector<double> r;
+  values_of(*this, [&r](const auto &v) { r.push_back(static_cast<double>(v)); });
   for (int k = 0; k < nfriction; ++k) {
     r.push_back(friction[k].group);
     r.push_back(friction[k].mu);
@@ -177,32 +177,23 @@ std::vector<double> PairSettings::record() const
 
 PairSettings PairSettings::from_record(LAMMPS *lmp, int version, const double *r, int count)
 {
-  constexpr int FIXED = 12;
   if (version != VERSION)
     lmp->error->all(FLERR,
                     "Pair style sph/granular: the restart file holds settings of record version "
                     "{}, which this GRANSPH does not know (it reads version {} and the files "
                     "written before the record)",
                     version, VERSION);
-  const int walls = count >= FIXED ? static_cast<int>(r[FIXED - 1]) : -1;
-  if (walls < 0 || walls > MAX_FRICTION_WALLS || count != FIXED + 2 * walls)
+  PairSettings s;
+  int fixed = 0;
+  values_of(s, [&fixed](const auto &) { ++fixed; });
+  const int walls = count >= fixed ? static_cast<int>(r[fixed - 1]) : -1;
+  if (walls < 0 || walls > MAX_FRICTION_WALLS || count != fixed + 2 * walls)
     lmp->error->all(FLERR, "Pair style sph/granular: the restart file's settings record is "
                            "damaged ({} values)", count);
-  PairSettings s;
-  s.h = r[0];
-  s.visc_alpha = r[1];
-  s.visc_beta = r[2];
-  s.visc_sound = static_cast<Viscosity::Sound>(static_cast<int>(r[3]));
-  s.visc_walls = r[4] != 0.0;
-  s.corrected_gradient = r[5] != 0.0;
-  s.wall_normal = r[6] != 0.0;
-  s.wall_stress = static_cast<WallSums::Mode>(static_cast<int>(r[7]));
-  s.mixed_precision = r[8] != 0.0;
-  s.hold_stick = r[9] != 0.0;
-  s.prune = r[10];
-  s.nfriction = walls;
-  for (int k = 0; k < walls; ++k)
-    s.friction[k] = {static_cast<int>(r[FIXED + 2 * k]), r[FIXED + 2 * k + 1]};
+  int k = 0;
+  values_of(s, [&](auto &v) { assign(v, r[k++]); });
+  for (int w = 0; w < walls; ++w)
+    s.friction[w] = {static_cast<int>(r[fixed + 2 * w]), r[fixed + 2 * w + 1]};
   return s;
 }
 

@@ -55,7 +55,7 @@ struct PairSettings {
   // defaults; stops with an error naming the keyword for bad input
   static PairSettings parse(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg);
 
-  bool operator==(const PairSettings &o) const { return same_rates(o) && prune == o.prune; }
+  bool operator==(const PairSettings &o) const { return record() == o.record(); }
   bool operator!=(const PairSettings &o) const { return !(*this == o); }
   // whether the rates of an evaluation are the same under both (prune changes only which
   // neighbours outside the support the sums visit)
@@ -75,6 +75,25 @@ struct PairSettings {
   static PairSettings from_legacy_rates(const double *values, int count);
 
   bool has_friction_walls() const { return nfriction > 0; }
+
+ private:
+  // f(value) for each setting but the friction walls' in the record's order, the count of
+  // friction walls last: the one list of the settings that the record and == go by
+  template <class Settings, class F> static void values_of(Settings &s, F &&f)
+  {
+    f(s.h);
+    f(s.visc_alpha);
+    f(s.visc_beta);
+    f(s.visc_sound);
+    f(s.visc_walls);
+    f(s.corrected_gradient);
+    f(s.wall_normal);
+    f(s.wall_stress);
+    f(s.mixed_precision);
+    f(s.hold_stick);
+    f(s.prune);
+    f(s.nfriction);
+  }
 };
 
 // What the neighbour sums of one evaluation read besides the particles (see
