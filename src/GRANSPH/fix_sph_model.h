@@ -80,10 +80,13 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
 
     int operator()(int begin, int end) const
     {
+      // local copies: the loop then keeps the arrays' bases and strides in registers
+      const GrainRows r = rows;
+      const double step = dt, to_acceleration = ftm2v;
       int bad = 0;
       GRANSPH_SIMD_IF_SUM(VectorisedStep<M>::value, bad)
       for (int k = begin; k < end; ++k)
-        bad += GRANSPH::step_grain<STAGE, EXTRAPOLATE>(m, rows, k, dt, ftm2v);
+        bad += GRANSPH::step_grain<STAGE, EXTRAPOLATE>(m, r, k, step, to_acceleration);
       return bad;
     }
   };

@@ -157,9 +157,10 @@ template <class Column> KOKKOS_INLINE_FUNCTION StepRates rates_at(const Column &
           {r(i, at + L::SPIN), r(i, at + L::SPIN + 1), r(i, at + L::SPIN + 2)}};
 }
 
+// (forced inline: the host's loop over the grains vectorises only with it inside)
 template <Stage STAGE, bool EXTRAPOLATE, class Model, class Rows>
-KOKKOS_INLINE_FUNCTION int step_grain(const Model &m, const Rows &rows, int k, double dt,
-                                      double ftm2v)
+KOKKOS_FORCEINLINE_FUNCTION int step_grain(const Model &m, const Rows &rows, int k, double dt,
+                                           double ftm2v)
 {
   using L = StateLayout;
   const int i = rows.atom(k);
