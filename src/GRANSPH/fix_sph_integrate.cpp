@@ -172,6 +172,14 @@ void FixSPHIntegrate::init()
     error->all(FLERR, "Fix {} does not support run_style respa", style);
   find(lmp, std::string("Fix ") + style);    // the only one
 
+  bool inflow = false;
+  for (int i = 0; i < modify->nfix; ++i) inflow |= utils::strmatch(modify->fix[i]->style, "^sph/inflow");
+  if (group->count(igroup) == 0 && !inflow)
+    error->all(FLERR,
+               "Fix {}: its group {} holds no atom, so there is nothing to integrate (did "
+               "create_atoms place none? a region outside the box, or sand above it)",
+               style, group->names[igroup]);
+
   int overlap = 0;
   for (int i = 0; i < atom->nlocal; ++i)
     if ((atom->mask[i] & groupbit) && (atom->mask[i] & wallbit)) overlap = 1;

@@ -29,6 +29,12 @@ KOKKOS_INLINE_FUNCTION PairParticle pair_particle(bool sph, const State &state, 
   return PairParticle::make(x, v, mass, rho, state.sigma(i), visc.sound_speed(E, rho));
 }
 
+// A grain's spacing as its volume m / rho0 gives it, in dim dimensions
+KOKKOS_INLINE_FUNCTION double grain_spacing(double mass, double rho0, int dim)
+{
+  return dim == 2 ? sqrt(mass / rho0) : cbrt(mass / rho0);
+}
+
 // Dummy particle d's stress (eq. 8) from its grains, into sigma and the state, with the
 // wall's acceleration from d's velocity v_d since the last evaluation (wall_gravity;
 // inv_dt 0 at a run's setup, which keeps that history as it is). Returns the sums.

@@ -32,6 +32,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <unordered_map>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using GRANSPH::PairParticle;
@@ -148,7 +150,10 @@ void PairSPHGranular::compute(int eflag, int vflag)
                         normals, friction, slide};
   const HostParticles listed(sum_options(limited), atoms, particles);
   const HostParticles p = config.prune > 0.0 ? pruned(listed, nall) : listed;
-  if (update->setupflag) check_no_coincident(p);
+  if (update->setupflag) {
+    check_no_coincident(p);
+    if (fix.wallbit) check_wall_spacing();
+  }
   if (fix.wallbit) {
     walls(p, !limited);
     fix.forward_comm_state();
@@ -237,6 +242,69 @@ template <class Particles> void PairSPHGranular::check_no_coincident(const Parti
   for (int ii = 0; ii < list->inum && found < 0; ++ii)
     if (GRANSPH::has_coincident_neighbour(p, list->ilist[ii])) found = list->ilist[ii];
   stop_if_coincident(found);
+}
+
+// Collective: a wall or terrain made at another spacing than the sand is not the wall the
+// sums assume (a coarser one lets grains through): the mean distance from a dummy to its
+// nearest dummy must be within a factor 1.5 of the grains' mean spacing. The nearest dummy
+// is searched in cells of side 2h over the owned and ghost dummies (the neighbour list
+// may leave dummy pairs out: neigh_modify exclude).
+void PairSPHGranular::check_wall_spacing()
+{
+  enum { WALL_GAPS, WALL_COUNT, GRAIN_SPACINGS, GRAIN_COUNT, DUMMIES, NSUMS };
+  double local[NSUMS] = {0.0, 0.0, 0.0, 0.0, 0.0}, sums[NSUMS];
+  const double cell = 2.0 * config.h;
+  double **x = atom->x;
+  const int *mask = atom->mask, wallbit = integrator->wallbit;
+  const auto cell_of = [&](const double *xi, int a) { return (long long) floor(xi[a] / cell); };
+  const auto key = [](long long cx, long long cy, long long cz) {
+    return ((cx & 0x1fffff) << 42) | ((cy & 0x1fffff) << 21) | (cz & 0x1fffff);
+  };
+  std::unordered_map<long long, std::vector<int>> dummies;
+  for (int j = 0; j < atom->nlocal + atom->nghost; ++j)
+    if (mask[j] & wallbit) dummies[key(cell_of(x[j], 0), cell_of(x[j], 1), cell_of(x[j], 2))].push_back(j);
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (mask[i] & integrator->groupbit) {
+      const double m = atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
+      local[GRAIN_SPACINGS] += GRANSPH::grain_spacing(m, integrator->material.rho0, domain->dimension);
+      local[GRAIN_COUNT] += 1.0;
+    }
+    if (!(mask[i] & wallbit)) continue;
+    local[DUMMIES] += 1.0;
+    double nearest = cell * cell;
+    for (long long cx = cell_of(x[i], 0) - 1; cx <= cell_of(x[i], 0) + 1; ++cx)
+      for (long long cy = cell_of(x[i], 1) - 1; cy <= cell_of(x[i], 1) + 1; ++cy)
+        for (long long cz = cell_of(x[i], 2) - 1; cz <= cell_of(x[i], 2) + 1; ++cz) {
+          const auto found = dummies.find(key(cx, cy, cz));
+          if (found == dummies.end()) continue;
+          for (const int j : found->second) {
+            double rsq = 0.0;
+            for (int a = 0; a < 3; ++a) rsq += (x[i][a] - x[j][a]) * (x[i][a] - x[j][a]);
+            if (rsq > 0.0 && rsq < nearest) nearest = rsq;
+          }
+        }
+    if (nearest < cell * cell) {
+      local[WALL_GAPS] += sqrt(nearest);
+      local[WALL_COUNT] += 1.0;
+    }
+  }
+  MPI_Allreduce(local, sums, NSUMS, MPI_DOUBLE, MPI_SUM, world);
+  if (sums[GRAIN_COUNT] == 0.0 || sums[DUMMIES] == 0.0) return;
+  constexpr double FACTOR = 1.5;
+  const double grains = sums[GRAIN_SPACINGS] / sums[GRAIN_COUNT];
+  if (sums[WALL_COUNT] == 0.0)
+    error->all(FLERR,
+               "Pair style sph/granular: no dummy particle has another within 2h = {:.4g} of it "
+               "while the grains lie {:.4g} apart (their volume m / rho0): make the walls and "
+               "terrain at the grains' spacing (tools/terrain --dx {:.4g})",
+               cell, grains, grains);
+  const double walls = sums[WALL_GAPS] / sums[WALL_COUNT];
+  if (walls > FACTOR * grains || walls * FACTOR < grains)
+    error->all(FLERR,
+               "Pair style sph/granular: the dummy particles lie {:.4g} apart (the mean distance "
+               "to the nearest dummy), the grains {:.4g} (their volume m / rho0): make the walls "
+               "and terrain at the grains' spacing (tools/terrain --dx {:.4g})",
+               walls, grains, grains);
 }
 
 // Collective: if any rank found an owned particle (index i >= 0) with a neighbour on top
@@ -626,9 +694,20 @@ void PairSPHGranular::init_style()
   integrator = &FixSPHIntegrate::find(lmp, "Pair style sph/granular");
   c0 = sqrt(integrator->material.bulk_modulus() / integrator->material.rho0);
   check_wall_normals();
-  for (int k = 0; k < config.nfriction; ++k)
-    if (!group->names[config.friction[k].group])
+  for (int k = 0; k < config.nfriction; ++k) {
+    const int igroup = config.friction[k].group;
+    if (!group->names[igroup])
       error->all(FLERR, "Pair style sph/granular: a wall/friction group was deleted");
+    bigint local = 0, dummies = 0;
+    for (int i = 0; i < atom->nlocal; ++i)
+      local += (atom->mask[i] & group->bitmask[igroup]) && (atom->mask[i] & integrator->wallbit);
+    MPI_Allreduce(&local, &dummies, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (integrator->wallbit && dummies == 0)
+      error->all(FLERR,
+                 "Pair style sph/granular: wall/friction group {} holds no dummy particle of the "
+                 "walls group of fix {}",
+                 group->names[igroup], integrator->id);
+  }
   if (config.has_friction_walls() && !integrator->wallbit)
     error->all(FLERR,
                "Pair style sph/granular: wall/friction needs dummy walls: the integrator fix "

@@ -66,6 +66,8 @@ class PairSPHGranular : public Pair {
 
   void allocate();
   void stop_if_coincident(int i);
+  // at a run's setup, collective: the dummies' spacing against the grains' (on the host)
+  void check_wall_spacing();
   void tally_virial(int i, const double *vir);
   void pack_wall_normals(double *out, int n) const;
   void check_wall_normals() const;
@@ -104,6 +106,7 @@ class PairSPHGranular : public Pair {
   void pack_particles(int from, int to);
   void pack_particles_single(int n);
   template <class Particles> void check_no_coincident(const Particles &p);
+
   template <class Particles> void walls(const Particles &p, bool with_forces);
   template <class Particles> void wall_forces(const Particles &p);
   template <class Particles> void add_wall_force(const Particles &p, int d, bool has_grains);

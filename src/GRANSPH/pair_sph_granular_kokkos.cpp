@@ -165,6 +165,10 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   }
   DeviceParticles<DeviceType> p(sum_options(limited), atoms, d_particles);
 
+  if (update->setupflag && fix.wallbit) {
+    atomKK->sync(Host, X_MASK | MASK_MASK | TYPE_MASK | RMASS_MASK);
+    check_wall_spacing();
+  }
   if (config.prune > 0.0) prune_rows(p, nall, moved_sq);
   if (update->setupflag) {    // no two interacting particles on one place
     auto ilist = k_list->d_ilist;
