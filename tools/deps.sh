@@ -137,13 +137,19 @@ build_lammps() {
   local src=$GRANSPH_DEPS/lammps build=$GRANSPH_DEPS/lammps/build
   local cxx_flags; cxx_flags=$(gransph_arch_cxx_flags)
   local config; config=$( (lammps_cmake_args; echo "$cxx_flags") | sha256sum | cut -c1-16)
-  local stamp=$build/.built-$LAMMPS_DEB-$config
+  # 29Sep2021 built with exceptions loses a one-rank error's message from a redirected
+  # screen and the log file (its main() aborts without flushing them); later LAMMPS
+  # flushes them first, and so does the source after this patch
+  local patch; patch=$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/patches/lammps-29Sep2021-flush-before-abort.patch
+  local source_tag; source_tag=$LAMMPS_DEB-$(sha256sum < "$patch" | cut -c1-16)
+  local stamp=$build/.built-$source_tag-$config
   [ -f "$stamp" ] && [ -x "$build/lmp" ] && return
-  if [ ! -f "$src/.unpacked-$LAMMPS_DEB" ]; then
+  if [ ! -f "$src/.unpacked-$source_tag" ]; then
     log "unpacking LAMMPS $LAMMPS_DEB"
     rm -rf "$src" && mkdir -p "$src"
     tar -xJf "$GRANSPH_DEPS/src/$LAMMPS_ORIG" -C "$src" --strip-components=1
-    touch "$src/.unpacked-$LAMMPS_DEB"
+    patch -d "$src" -p1 --quiet < "$patch"
+    touch "$src/.unpacked-$source_tag"
   fi
   log "building LAMMPS (this takes ~6 min on 2 cores without a warm ccache)"
   # shellcheck disable=SC2046

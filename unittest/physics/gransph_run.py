@@ -52,14 +52,19 @@ def run(input_file, variables=None, ranks=1, args=(), cwd=None):
 
 
 def output_of(directory, text, args=()):
-    """Run the input `text` from `directory`; return LAMMPS' exit code and all it printed."""
+    """Run the input `text` from `directory` as a batch job does, its screen and log
+    written to files (screen.txt, log.txt: no pipe, no line buffering, so that a
+    one-rank error's message must reach them before LAMMPS aborts); return LAMMPS' exit
+    code and all it wrote to the screen."""
     path = os.path.join(directory, "in.case")
     with open(path, "w") as f:
         f.write(text)
-    # line-buffered: error->one ends in MPI_Abort, which does not flush a pipe
-    cmd = ["stdbuf", "-oL", LMP, "-in", path, "-log", "none", "-echo", "none"] + list(args)
-    proc = subprocess.run(cmd, cwd=directory, capture_output=True, text=True, timeout=120)
-    return proc.returncode, proc.stdout + proc.stderr
+    screen = os.path.join(directory, "screen.txt")
+    cmd = [LMP, "-in", path, "-log", os.path.join(directory, "log.txt"), "-echo", "none"] + list(args)
+    with open(screen, "w") as out:
+        proc = subprocess.run(cmd, cwd=directory, stdout=out, stderr=subprocess.STDOUT, timeout=120)
+    with open(screen) as f:
+        return proc.returncode, f.read()
 
 
 def first_error(directory, text, args=()):

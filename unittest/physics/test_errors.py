@@ -1,5 +1,6 @@
 """Bad input stops LAMMPS with an error that names the problem, never a crash,
-a hang or silent NaNs."""
+a hang or silent NaNs; run as a batch job runs, with the screen and the log
+redirected to files, which must hold the message."""
 
 import os
 import re
@@ -58,6 +59,11 @@ CASES = [
      "unknown value glue of keyword wall/friction/hold"),
     ("wall/friction angle of 90", dict(pair_style="sph/granular 0.012 wall/friction floor 90"),
      r"wall/friction of group floor must be rough, slip, material or an angle in \[0, 90\) degrees, not 90"),
+    ("wall/friction on a group of no dummies",
+     dict(pair_style="sph/granular 0.012 wall/friction sand 20"),
+     "wall/friction group sand holds no dummy particle of the walls group of fix sph"),
+    ("no grains", dict(run="delete_atoms group sand\nrun 10"),
+     "its group sand holds no atom, so there is nothing to integrate"),
     ("wall/friction without a value", dict(pair_style="sph/granular 0.012 wall/friction floor"),
      "wall/friction needs a group and a value"),
     ("sph/visc/atom read before the step's force evaluation",
@@ -142,6 +148,15 @@ ON_A_DUMMY = dict(run="create_atoms 1 single 0.025 0.025 -0.005 units box\ngroup
 COINCIDENT = r"atoms \d+ and \d+ are both at \(0\.025\d*, 0\.025\d*, -0\.005\d*\); did two create_atoms"
 CASES.append(("a grain on a dummy particle", ON_A_DUMMY, COINCIDENT))
 
+# sand finer than its floor (a terrain made at another spacing): the 1 cm floor under grains
+# of 5 mm, and under grains of 3.3 mm whose support 2h does not reach a second dummy
+FINER_SAND = dict(mass="mass 1 3.0625e-4\nmass 2 2.45e-3")
+WALL_SPACING = r"the dummy particles lie 0\.01 apart \(the mean distance to the nearest dummy\), the grains 0\.005 "
+CASES.append(("a floor at twice the grains' spacing", FINER_SAND, WALL_SPACING))
+CASES.append(("a floor farther apart than the support",
+              dict(mass="mass 1 9.07e-5\nmass 2 2.45e-3", pair_style="sph/granular 0.004"),
+              r"no dummy particle has another within 2h = 0\.008 of it while the grains lie 0\.0033"))
+
 # a bad initial state stops the run at setup, before the step-0 thermo output
 BAD_START = BAD_STATE + r" \(rho 2450, v {} 0 0\) at step 0"
 NAN_START = dict(run="variable vx atom exp(1000)-exp(1000)\nvelocity sand set v_vx 0 0 units box\nrun 10")
@@ -166,7 +181,7 @@ create_atoms 1 region sand
 create_atoms 2 region floor
 group sand type 1
 group floor type 2
-mass * 2.45e-4
+mass * 0.245
 pair_style sph/granular 0.012
 pair_coeff * *
 fix gravity sand gravity 9.81 vector 0 -1 0
@@ -212,6 +227,23 @@ with tempfile.TemporaryDirectory() as tmp:
         check("sph/visc/atom in a dump every 5 steps" + (" (/kk)" if args else ""),
               code == 0 and not error and [d.split()[0] for d in dumped] == ["0", "5", "10"],
               error or f"steps dumped: {[d.split()[0] for d in dumped]}")
+    code, error = run_case(tmp, FINER_SAND, KOKKOS)
+    check("a floor at twice the grains' spacing (/kk)", code != 0 and re.search(WALL_SPACING, error),
+          error or "no error")
+    # a batch job's log file holds the message too, from a one-rank error (error->one) of
+    # GRANSPH's and of LAMMPS' own
+    for name, text, expected in (
+            ("a material line of 5 fields", BASE.format(**{**GOOD, "fix": "fix sph sand sph/elastoplastic {short5} Good"}),
+             r"material Good: 5 fields instead of 11"),
+            ("an illegal variable", "variable a equal 1\nprint ${b}\n", r"Substitution for illegal variable b")):
+        with open(os.path.join(tmp, "short5.gransph"), "w") as f:
+            f.write("# UNITS: si\nGood 2450 20e6 0.3 37\n")
+        code, error = gransph_run.first_error(tmp, text.replace("{short5}", os.path.join(tmp, "short5.gransph")))
+        with open(os.path.join(tmp, "log.txt")) as f:
+            logged = re.search(expected, f.read())
+        check(f"{name}: the message in the redirected screen and the log file",
+              code != 0 and re.search(expected, error) and logged,
+              f"screen: {error or 'no error'}; log: {'has it' if logged else 'lacks it'}")
     for name, fields, expected in CASES:
         code, error = run_case(tmp, fields)
         check(name, code != 0 and re.search(expected, error), error or "no error")
