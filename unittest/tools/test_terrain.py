@@ -305,7 +305,36 @@ class TestSphereCapSTL(TmpDir):
         junk = self.path("junk.stl")
         with open(junk, "w") as f:
             f.write("solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0 zero\n")
-        self.assertFailsClearly(["layers", junk, self.path("x.data"), "--dx", 0.02], junk)
+        self.assertFailsClearly(["layers", junk, self.path("x.data"), "--dx", 0.02], junk,
+                                "line 4: a vertex needs three numbers")
+        two = self.path("two.stl")
+        with open(two, "w") as f:
+            f.write("solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0\n")
+        self.assertFailsClearly(["layers", two, self.path("x.data"), "--dx", 0.02], two,
+                                "line 4: a vertex needs three numbers: 'vertex 0 0'")
+
+    def test_truncated_binary(self):
+        tris = sphere_cap(self.c, self.R, self.rplan, 0.05)
+        whole = self.path("whole.stl")
+        make_stl(whole, tris)
+        with open(whole, "rb") as f:
+            data = f.read()
+        cut = self.path("cut.stl")
+        with open(cut, "wb") as f:
+            f.write(data[:84 + 50 * (len(tris) // 2)])
+        self.assertFailsClearly(["layers", cut, self.path("x.data"), "--dx", 0.02], cut,
+                                "truncated or padded binary STL: its header says %d facets" % len(tris))
+
+    def test_millimetres(self):
+        """The cap written in millimetres: refused with the particle count it would make,
+        and read as the metre one with --units mm."""
+        tris = sphere_cap(self.c, self.R, self.rplan, 0.05)
+        mm = self.path("mm.stl")
+        make_stl(mm, 1000 * tris)
+        self.assertFailsClearly(["layers", mm, self.path("x.data"), "--dx", 0.02], mm,
+                                "more than --max-particles", "--units mm")
+        rc, out, err = run_tool("layers", mm, self.path("mm.data"), "--dx", 0.02, "--units", "mm")
+        self.assertEqual(rc, 0, err)
 
 
 HEADER = "ncols 5\nnrows 4\nxllcorner 0\nyllcorner 0\ncellsize 0.05\n%s"
@@ -346,12 +375,47 @@ class TestGridErrors(TmpDir):
     def test_malformed_header(self):
         p = self.grid("bad.asc", header=HEADER.replace("ncols 5", "ncols five"))
         self.assertFailsClearly(["layers", p, self.path("x.data"), "--dx", 0.02], p,
-                                "GDAL cannot read it as an elevation grid")
+                                "header must give ncols and nrows")
         p = self.grid("short.asc", rows=self.rows[:2])
         self.assertFailsClearly(["layers", p, self.path("x.data"), "--dx", 0.02], p,
-                                "GDAL cannot read it")
+                                "10 values; the header says 4 rows of 5 (20)")
         self.assertFailsClearly(["layers", self.path("missing.asc"), self.path("x.data"),
                                  "--dx", 0.02], "missing.asc", "no such file")
+
+    def test_malformed_values(self):
+        rows = list(self.rows)
+        rows[2] = "0.0 0.01 1.2.3 0.03 0.04"
+        p = self.grid("spike.asc", rows)
+        self.assertFailsClearly(["layers", p, self.path("x.data"), "--dx", 0.02], p,
+                                "line 8, value 3: '1.2.3' is not a number")
+        rows = list(self.rows)
+        rows[1] = "0.0 0.01 0.02 0.03"
+        rows[2] = "0.0 0.01 0.02 0.03 0.04 0.05"
+        p = self.grid("ragged.asc", rows)
+        self.assertFailsClearly(["layers", p, self.path("x.data"), "--dx", 0.02], p,
+                                "line 7 holds 4 values; the header says ncols 5")
+
+    def test_units_and_origin(self):
+        """A grid in centimetres with its corner at (1000, 2000, 50) cm: the model's
+        particles lie where the same grid in metres at the origin puts them."""
+        p = self.grid("m.asc")
+        cm_rows = [" ".join("%g" % (100 * float(v) + 50) for v in r.split()) for r in self.rows]
+        q = self.grid("cm.asc", cm_rows, HEADER.replace("xllcorner 0", "xllcorner 1000")
+                      .replace("yllcorner 0", "yllcorner 2000").replace("cellsize 0.05", "cellsize 5"))
+        rc, out, err = run_tool("layers", p, self.path("m.data"), "--dx", 0.02)
+        self.assertEqual(rc, 0, err)
+        rc, out, err = run_tool("layers", q, self.path("cm.data"), "--dx", 0.02, "--units", "cm",
+                                "--origin", 1000, 2000, 50)
+        self.assertEqual(rc, 0, err)
+        _, _, Xm, _, _ = read_data(self.path("m.data"))
+        _, _, Xc, _, _ = read_data(self.path("cm.data"))
+        self.assertEqual(Xm.shape, Xc.shape)
+        self.assertLess(np.abs(Xm - Xc).max(), 1e-9)
+
+    def test_caret_in_function(self):
+        self.assertFailsClearly(["grid", self.path("c.asc"), "--function", "x^2",
+                                 "--xlim", 0, 1, "--ylim", 0, 1, "--cell", 0.1],
+                                "write powers as ** (x**2)")
 
     def test_resolution_against_dx(self):
         p = self.grid("coarse.asc")
