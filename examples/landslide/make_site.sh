@@ -6,7 +6,8 @@
 # (atom type 2) that follow the surface, with their outward normals (doc/terrain.md).
 set -e
 dx=${1:-0.02}
-terrain=$(dirname "$0")/../../tools/terrain
+# tools/lmp says where GRANSPH is (GRANSPH_TOP): the example runs from a copy of its folder
+terrain=${GRANSPH_TOP:-$(dirname "$0")/../..}/tools/terrain
 "$terrain" grid --function "where(x < 0.6, 0.84*(0.8 - x), 1.05*maximum(1 - x, 0)**2) + 3*y**2" \
   --xlim -0.1 1.4 --ylim -0.2 0.2 --cell 0.01 landslide_site.asc
 "$terrain" layers landslide_site.asc landslide_site.data --dx "$dx" --height 0.3 \

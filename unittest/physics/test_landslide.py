@@ -11,6 +11,7 @@ FixPropertyAtom::read_data_section.)"""
 
 import os
 import re
+import shutil
 import sys
 import tempfile
 
@@ -29,6 +30,12 @@ with tempfile.TemporaryDirectory() as tmp:
         outputs[label] = gransph_run.run(os.path.join(EXAMPLE, "in.landslide"), VARIABLES,
                                          ranks=ranks, args=args, cwd=tmp)
         states[label] = gransph_run.read_dump(os.path.join(tmp, "landslide.dump"))
+    # the example from a copy of its folder, as a user runs it: its site script finds
+    # tools/terrain through tools/lmp
+    copy = os.path.join(tmp, "copy")
+    shutil.copytree(EXAMPLE, copy)
+    gransph_run.run(os.path.join(copy, "in.landslide"), {"steps": 5}, args=ARGS, cwd=copy)
+    from_copy = os.path.exists(os.path.join(copy, "landslide_site.data"))
     # the barrier on a spring (a rigid body), on 2 ranks
     spring = gransph_run.run(os.path.join(EXAMPLE, "in.landslide"),
                              dict(VARIABLES, spring=1000), ranks=2, args=ARGS, cwd=tmp)
@@ -36,6 +43,7 @@ out = outputs["1 rank"]
 checks = []
 moved = np.max(np.abs(states["1 rank"]["vx"])) > 1e-3
 checks.append(("the sand moved", moved))
+checks.append(("the example runs from a copy of its folder", from_copy))
 diffs = gransph_run.dump_differences(states["1 rank"], states["2 ranks"])
 checks.append(("2 ranks = 1 rank (the dump's 10 digits)", moved and max(diffs.values()) < 1e-8))
 if ARGS:
