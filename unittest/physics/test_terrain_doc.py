@@ -1,9 +1,11 @@
 """doc/terrain.md's minimal terrain input runs as it stands there: the block after its
 marker comment, saved as in.chute in an empty folder and run by tools/lmp, makes its site,
-seeds the sand, runs to the end and sets the sand moving down the chute."""
+seeds the sand, runs to the end and sets the sand moving down the chute; tools/terrain
+preview draws the site and the deposit it dumps."""
 
 import os
 import re
+import subprocess
 import tempfile
 
 import gransph_run
@@ -36,6 +38,13 @@ def main():
             front0, front1 = float(thermo[0][3]), float(thermo[-1][3])
             check("the sand moves down the chute", front1 > front0 + 1e-3,
                   f"front {front0:.4f} -> {front1:.4f} m")
+        picture = os.path.join(tmp, "chute.png")
+        proc = subprocess.run([os.path.join(gransph_run.TOP, "tools", "terrain"), "preview",
+                               os.path.join(tmp, "chute.data"), "--dump", os.path.join(tmp, "chute.dump"),
+                               "--out", picture], capture_output=True, text=True)
+        drawn = proc.returncode == 0 and os.path.exists(picture) and os.path.getsize(picture) > 20000
+        check("tools/terrain preview draws the site and the deposit", drawn,
+              (proc.stdout + proc.stderr).strip()[-300:])
     check.finish()
 
 
