@@ -31,7 +31,6 @@ struct FrictionWall {
   static constexpr double ROUGH = -1.0, MATERIAL = -2.0;
   int group;    // an index into LAMMPS' groups
   double mu;
-  bool operator==(const FrictionWall &o) const { return group == o.group && mu == o.mu; }
 };
 
 struct PairSettings {
