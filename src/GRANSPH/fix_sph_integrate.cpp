@@ -18,7 +18,10 @@
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
+#include "neighbor.h"
+#include "output.h"
 #include "pair.h"
+#include "thermo.h"
 #include "update.h"
 
 #include <cfloat>
@@ -224,6 +227,23 @@ void FixSPHIntegrate::end_of_step()
 {
   reset_cfl_timestep();
   last_dt = update->dt;
+  if (neighbor->ago == 0) stop_if_atoms_lost();    // atoms leave the box at an exchange
+}
+
+// Atoms that cross a fixed boundary are lost, which LAMMPS reports ("Lost atoms") without
+// saying why or what to do; where it would stop for them (thermo_modify lost error, the
+// default), stop first and say it
+void FixSPHIntegrate::stop_if_atoms_lost() const
+{
+  if (output->thermo->lostflag != Thermo::ERROR) return;
+  bigint local = atom->nlocal, total = 0;
+  MPI_Allreduce(&local, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (total < atom->natoms)
+    error->all(FLERR,
+               "Fix {}: {} atoms left the box by step {} (an atom that crosses a fixed boundary "
+               "is lost): fix sph/outflow over a region inside the box removes and counts the "
+               "grains that leave the site (doc/fix_sph_outflow.rst), or make the box larger",
+               style, atom->natoms - total, update->ntimestep);
 }
 
 /* ----------------------------------------------------------------------

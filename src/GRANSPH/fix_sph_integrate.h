@@ -102,6 +102,7 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
 
   double smoothing_length() const;
   void check_finite() const;
+  void stop_if_atoms_lost() const;
   void check_plane() const;
   virtual void reset_cfl_timestep();
   void set_timestep(double dt);
