@@ -18,7 +18,6 @@
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
-#include "neighbor.h"
 #include "output.h"
 #include "pair.h"
 #include "thermo.h"
@@ -227,12 +226,13 @@ void FixSPHIntegrate::end_of_step()
 {
   reset_cfl_timestep();
   last_dt = update->dt;
-  if (neighbor->ago == 0) stop_if_atoms_lost();    // atoms leave the box at an exchange
+  // LAMMPS checks for lost atoms with its thermo output, just after this
+  if (update->ntimestep == output->next_thermo) stop_if_atoms_lost();
 }
 
 // Atoms that cross a fixed boundary are lost, which LAMMPS reports ("Lost atoms") without
-// saying why or what to do; where it would stop for them (thermo_modify lost error, the
-// default), stop first and say it
+// saying why or what to do; where and when it would stop for them (thermo_modify lost
+// error, the default; at a thermo output step), stop first and say it
 void FixSPHIntegrate::stop_if_atoms_lost() const
 {
   if (output->thermo->lostflag != Thermo::ERROR) return;
