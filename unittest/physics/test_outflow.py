@@ -1,9 +1,9 @@
 """fix sph/outflow: sand flowing off a floor smaller than its runout leaves the box.
 Without the fix the run stops, saying that atoms left the box and that fix sph/outflow
-removes them (the integrator says it before LAMMPS' own "Lost atoms"); with it (1 and 2 ranks, with and
-without `every`) the run ends cleanly, and the fix's count and mass are those of
-the sand atoms that are gone, none of the floor's; bad input stops with an error
-that names the problem."""
+removes them (the integrator says it before LAMMPS' own "Lost atoms"); with it (1 and
+2 ranks, with and without `every`) the run ends cleanly, and the fix's count and mass
+are those of the sand atoms that are gone, none of the floor's; bad input stops with
+an error that names the problem."""
 
 import os
 import re
