@@ -55,7 +55,6 @@ struct PairSettings {
   static PairSettings parse(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg);
 
   bool operator==(const PairSettings &o) const { return record() == o.record(); }
-  bool operator!=(const PairSettings &o) const { return !(*this == o); }
   // whether the rates of an evaluation are the same under both (prune changes only which
   // neighbours outside the support the sums visit)
   bool same_rates(const PairSettings &o) const;
