@@ -37,11 +37,6 @@
 namespace LAMMPS_NS {
 namespace GRANSPHCompat {
 
-  // Whether this LAMMPS's Kokkos border communication carries the per-atom arrays of a
-  // fix property/atom ... ghost yes to ghost atoms: 29 Sep 2021 crashes in it
-  // (FixPropertyAtom::unpack_border called by AtomVecAtomicKokkos), 4 Jul 2026 does it.
-  constexpr bool kokkos_borders_carry_custom_arrays = GRANSPH_KOKKOS_NEW_API;
-
   template <class DeviceType> struct KokkosTypes {
     typedef ArrayTypes<DeviceType> AT;
 #if GRANSPH_KOKKOS_NEW_API

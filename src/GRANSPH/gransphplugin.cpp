@@ -13,6 +13,7 @@
 #include "fix_sph_elastoplastic.h"
 #include "fix_sph_inflow.h"
 #include "fix_sph_move.h"
+#include "fix_sph_normals.h"
 #include "fix_sph_outflow.h"
 #include "fix_sph_phasechange.h"
 #include "pair_sph_granular.h"
@@ -98,6 +99,9 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   register_style(reg, lmp, handle, "fix", "sph/outflow",
                  "GRANSPH: delete particles that leave a region",
                  (void *) &fix_creator<FixSPHOutflow>, true);
+  register_style(reg, lmp, handle, "fix", "sph/normals",
+                 "GRANSPH: the dummy particles' own wall normals",
+                 (void *) &fix_creator<FixSPHNormals>, true);
   register_style(reg, lmp, handle, "compute", "sph/wallforce",
                  "GRANSPH: force of the grains on a wall of dummy particles",
                  (void *) &compute_creator<ComputeSPHWallForce>, true);

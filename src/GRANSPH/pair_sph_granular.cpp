@@ -19,6 +19,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_sph_integrate.h"
+#include "fix_sph_normals.h"
 #include "force.h"
 #include "group.h"
 #include "gransph_lammps_compat.h"
@@ -94,7 +95,7 @@ using HostParticles = HostParticlesOf<PairParticle>;
 /* ---------------------------------------------------------------------- */
 
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
-    Pair(lmp), c0(0.0), warned_far_from_origin(false), integrator(nullptr), pruned_nall(-1),
+    Pair(lmp), c0(0.0), warned_far_from_origin(false), integrator(nullptr), normals_fix(nullptr), pruned_nall(-1),
     viscous_pressure_step(-1), viscous_pressure_nlocal(0), nmax(0),
     particles(nullptr),
     particles_single(nullptr), normals(nullptr), friction(nullptr), slide(nullptr)
@@ -507,9 +508,8 @@ void PairSPHGranular::stop_if_unnormalled(int i)
   if (i >= 0)
     error->one(FLERR,
                "Pair style sph/granular: dummy particle {} of a wall/friction group has no wall "
-               "normal: give the group's particles theirs (fix property/atom d2_wall_normal 3 "
-               "ghost yes, then set group ... d2_wall_normal[1] ...; or a data file's "
-               "WallNormals section)",
+               "normal: give the group's particles theirs with fix sph/normals (set GROUP nx "
+               "ny nz, or file FILE for the .normals file of tools/terrain)",
                atom->tag[i]);
   MPI_Barrier(world);    // until the rank with such a particle stops the run
 }
@@ -533,43 +533,30 @@ void PairSPHGranular::unpack_forward_comm(int n, int first, double *buf)
     for (int c = 0; c < SLIDE; ++c) slide[SLIDE * (first + k) + c] = buf[SLIDE * k + c];
 }
 
-// The wall normals of atoms [0, n), 3 per atom into `out`: a dummy particle's own, from
-// the per-atom array wall_normal (fix property/atom d2_wall_normal 3 ghost yes), made a
-// unit vector; zeros for a dummy without one (or without the array) and for the others.
+// The wall normals of atoms [0, n), 3 per atom into `out`: a dummy particle's own (fix
+// sph/normals), made a unit vector; zeros for a dummy without one and for the others.
 void PairSPHGranular::pack_wall_normals(double *out, int n) const
 {
-  int flag = 0, cols = 0;
-  const int index = atom->find_custom("wall_normal", flag, cols);
-  double **custom = index >= 0 ? atom->darray[index] : nullptr;
   const int *mask = atom->mask, wallbit = integrator->wallbit;
   for (int i = 0; i < n; ++i) {
-    double len = 0.0;
-    if (custom && (mask[i] & wallbit))
-      len = sqrt(custom[i][0] * custom[i][0] + custom[i][1] * custom[i][1] +
-                 custom[i][2] * custom[i][2]);
-    for (int a = 0; a < 3; ++a) out[3 * i + a] = len > 0.0 ? custom[i][a] / len : 0.0;
+    const double *ni = normals_fix && (mask[i] & wallbit) ? normals_fix->normal(i) : nullptr;
+    const double len = ni ? sqrt(ni[0] * ni[0] + ni[1] * ni[1] + ni[2] * ni[2]) : 0.0;
+    for (int a = 0; a < 3; ++a) out[3 * i + a] = len > 0.0 ? ni[a] / len : 0.0;
   }
 }
 
-// the per-atom array of wall normals, if there is one, must be what pack_wall_normals reads,
-// and reach the ghosts (the check cannot tell which fix property/atom made the array: it
-// finds one that communicates to ghosts)
-void PairSPHGranular::check_wall_normals() const
+// Wall normals come from fix sph/normals only: a per-atom array of the name GRANSPH once
+// read (fix property/atom d2_wall_normal) is an error, not silently ignored
+void PairSPHGranular::find_wall_normals()
 {
+  normals_fix = FixSPHNormals::find(lmp, "Pair style sph/granular");
   int flag = 0, cols = 0;
-  if (atom->find_custom("wall_normal", flag, cols) < 0) return;
-  if (flag != 1 || cols != 3)
+  if (atom->find_custom("wall_normal", flag, cols) >= 0)
     error->all(FLERR,
-               "Pair style sph/granular: the per-atom property wall_normal must be an array "
-               "of 3 floating-point values (fix property/atom d2_wall_normal 3 ghost yes)");
-  bool to_ghosts = false;
-  for (int i = 0; i < modify->nfix; ++i)
-    to_ghosts |= utils::strmatch(modify->fix[i]->style, "^property/atom") &&
-        modify->fix[i]->comm_border > 0;
-  if (!to_ghosts)
-    error->all(FLERR,
-               "Pair style sph/granular: the per-atom wall normals must reach ghost atoms: "
-               "fix property/atom d2_wall_normal 3 ghost yes");
+               "Pair style sph/granular: wall normals are no longer read from the per-atom "
+               "property wall_normal (fix property/atom d2_wall_normal): give them with fix "
+               "sph/normals (file FILE for the .normals file of tools/terrain, set GROUP nx ny "
+               "nz for a group)");
 }
 
 // the pair data of atoms [from, to) (GRANSPH::pair_particle)
@@ -693,7 +680,7 @@ void PairSPHGranular::init_style()
     error->all(FLERR, "Pair style sph/granular needs ghost velocities: use comm_modify vel yes");
   integrator = &FixSPHIntegrate::find(lmp, "Pair style sph/granular");
   c0 = sqrt(integrator->material.bulk_modulus() / integrator->material.rho0);
-  check_wall_normals();
+  find_wall_normals();
   for (int k = 0; k < config.nfriction; ++k) {
     const int igroup = config.friction[k].group;
     if (!group->names[igroup])

@@ -21,6 +21,7 @@ PairStyle(sph/granular,PairSPHGranular);
 namespace LAMMPS_NS {
 
 class FixSPHIntegrate;
+class FixSPHNormals;
 
 class PairSPHGranular : public Pair {
  public:
@@ -50,6 +51,7 @@ class PairSPHGranular : public Pair {
   double c0;                         // the viscosity's sqrt(K / rho0) of the material
   bool warned_far_from_origin;       // of single-precision positions, once
   FixSPHIntegrate *integrator;
+  const FixSPHNormals *normals_fix;    // the dummies' own normals, or nullptr (init_style)
 
   double friction_of(const GRANSPH::FrictionWall &w) const;
   // what the neighbour sums read besides the particles in this evaluation (`limited`:
@@ -70,7 +72,7 @@ class PairSPHGranular : public Pair {
   void check_wall_spacing();
   void tally_virial(int i, const double *vir);
   void pack_wall_normals(double *out, int n) const;
-  void check_wall_normals() const;
+  void find_wall_normals();
   int pack_wall_friction(double *out, const double *unit_normals, int n) const;
   void stop_if_unnormalled(int i);
   // at the setup of a run that continues the last: the dummies take the last step's force

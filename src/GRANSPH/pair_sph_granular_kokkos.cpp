@@ -91,15 +91,6 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::init_style()
   state_kk = dynamic_cast<SPHStateKokkos *>(integrator);
   if (!state_kk)
     error->all(FLERR, "Pair style sph/granular/kk needs the /kk variant of the GRANSPH integrator");
-  int flag = 0, cols = 0;
-  const bool ghosts = comm->nprocs > 1 || domain->xperiodic || domain->yperiodic ||
-      domain->zperiodic;
-  if (!GRANSPHCompat::kokkos_borders_carry_custom_arrays && ghosts &&
-      atom->find_custom("wall_normal", flag, cols) >= 0)
-    error->all(FLERR,
-               "Pair style sph/granular/kk: per-atom wall normals need LAMMPS newer than "
-               "29 Sep 2021 with ghost atoms (several ranks or periodic boundaries): this "
-               "version crashes passing them to ghosts under Kokkos; run the plain styles");
   // a full list: each particle writes only to itself, no atomics
   GRANSPHCompat::kokkos_full_list<DeviceType>(neighbor, this);
   atomKK->k_mass.template modify<LMPHostType>();

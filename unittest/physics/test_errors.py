@@ -79,16 +79,9 @@ CASES = [
      dict(pair_style="sph/granular 0.012 wall/friction floor 20",
           fix="fix sph sand sph/elastoplastic sand.gransph Chen2019"),
      "wall/friction needs dummy walls"),
-    ("wall normals of 2 columns", dict(pair_style="sph/granular 0.012 wall/gradient normal",
-                                       comm="comm_modify vel yes\n"
-                                            "fix normals all property/atom d2_wall_normal 2"),
-     "wall_normal must be an array of 3 floating-point values"),
-    ("wall normals as a vector", dict(comm="comm_modify vel yes\n"
-                                           "fix normals all property/atom d_wall_normal"),
-     "wall_normal must be an array of 3 floating-point values"),
-    ("wall normals without ghosts", dict(comm="comm_modify vel yes\n"
-                                              "fix normals all property/atom d2_wall_normal 3"),
-     "wall normals must reach ghost atoms"),
+    ("wall normals of fix property/atom", dict(comm="comm_modify vel yes\n"
+                                                   "fix normals all property/atom d2_wall_normal 3 ghost yes"),
+     r"wall normals are no longer read from the per-atom property wall_normal .*fix sph/normals"),
     ("no ghost velocities", dict(comm=""), "comm_modify vel yes"),
     ("no integrator fix", dict(fix=""), "needs a GRANSPH integrator"),
     ("missing material", dict(fix="fix sph sand sph/elastoplastic sand.gransph Nosuch"),
@@ -135,6 +128,32 @@ CASES = [
     ("a material line with a field too few", dict(fix="fix sph sand sph/elastoplastic {short} Good"),
      r"material file .*short.gransph, material Short: 10 fields instead of 11 on line: Short 2450"),
 ]
+
+# fix sph/normals: its keywords and the files it reads ({name} is tmp/name.normals); the
+# sand block's grains are atoms 1-125, its floor 126-200
+NORMALS_FILES = {"nosection": "Atoms\n\n126 2 0 0 0\n",
+                 "nonz": "WallNormals\n\n126 0 0 1\n127 0 0\n",
+                 "word": "WallNormals\n\n126 0 zero 1\n",
+                 "grain": "WallNormals\n\n1 0 0 1\n",
+                 "beyond": "WallNormals\n\n126 0 0 1\n999 0 0 1\n"}
+for name, fields, expected in (
+        ("an unknown keyword", "vector 0 0 1", r"unknown keyword vector \(valid: file, set\)"),
+        ("set of no group", "set nosuch 0 0 1", r"group nosuch \(keyword set\) does not exist"),
+        ("set of a zero normal", "set floor 0 0 0", "the normal of group floor must not be zero"),
+        ("set without nz", "set floor 0 0", "keyword set needs a group ID and nx ny nz"),
+        ("a file that is not there", "file nosuch.normals", "cannot open file nosuch.normals"),
+        ("a file without the section", "file {nosection}", "nosection.normals has no WallNormals section"),
+        ("a row without nz", "file {nonz}", r"nonz.normals:4: 127 0 0 \(expected ID nx ny nz\)"),
+        ("a word for a number", "file {word}", r"word.normals:3: 126 0 zero 1 \(expected ID nx ny nz\)"),
+        ("an ID of another group", "file {grain}",
+         r"atom 1 of file .*grain.normals is not in group floor \(was the file read with an ID offset\?\)"),
+        ("an ID of no atom", "file {beyond}", r"beyond.normals:4: no atom has ID 999")):
+    CASES.append(("fix sph/normals: " + name,
+                  dict(fix=GOOD["fix"] + "\nfix normals floor sph/normals " + fields), expected))
+CASES.append(("two fixes sph/normals",
+              dict(fix=GOOD["fix"] + "\nfix n1 floor sph/normals set floor 0 0 1\n"
+                                     "fix n2 floor sph/normals set floor 0 0 1"),
+              "fixes n1 and n2 both hold wall normals"))
 
 # expansion faster than dt can follow: rho < 0, caught with the atom's ID
 # the block at rest with a timestep 75 times its CFL limit (2.7e-5 s): the elastic
@@ -206,12 +225,17 @@ def run_case(tmp, fields, args=()):
     text = BASE.format(**{**GOOD, **fields})
     for name in ("bad", "long", "short"):
         text = text.replace("{" + name + "}", os.path.join(tmp, name + ".gransph"))
+    for name in NORMALS_FILES:
+        text = text.replace("{" + name + "}", os.path.join(tmp, name + ".normals"))
     return gransph_run.first_error(tmp, text, args)
 
 
 check = gransph_run.Checks()
 with tempfile.TemporaryDirectory() as tmp:
     good = "Good 2450 20e6 0.3 37 0 0 1500 1.1 0.6 0.8\n"
+    for name, text in NORMALS_FILES.items():
+        with open(os.path.join(tmp, name + ".normals"), "w") as f:
+            f.write(text)
     with open(os.path.join(tmp, "bad.gransph"), "w") as f:
         f.write("# UNITS: si\nBad 2450 20e6 0.6 37 0 0 1500 1.1 0.6 0.8\n")
     with open(os.path.join(tmp, "long.gransph"), "w") as f:

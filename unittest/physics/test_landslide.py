@@ -5,9 +5,7 @@ the same run on 2 MPI ranks gives the same state; with -var spring the barrier b
 rigid body on a spring (fix rigid, fix spring), on 2 ranks.
 
 Arguments are passed to LAMMPS (e.g. -k on t 1 -sf kk): every run then takes them, and
-the state of the first also equals the plain styles'. (Under Kokkos on LAMMPS 4Jul2026
-only: LAMMPS 29Sep2021's Kokkos crashes reading the data file's WallNormals, in
-FixPropertyAtom::read_data_section.)"""
+the state of the first also equals the plain styles'."""
 
 import os
 import re
@@ -56,8 +54,14 @@ barrier = [int(n) for n in re.findall(r"^(\d+) atoms in group barrier$", out, re
 # those created below the channel's rising bed are deleted, most stay
 checks.append(("barrier dummies on the bed",
                len(barrier) == 2 and 0.6 * barrier[0] < barrier[1] < barrier[0]))
-normals = re.search(r"^\s*(\d+) settings made for d2_wall_normal\[1\]", out, re.M)
-checks.append(("the barrier's normals set", normals is not None and int(normals.group(1)) > 300))
+terrain_normals = re.search(r"^Fix sph/normals: (\d+) wall normals from landslide_site.normals$",
+                            out, re.M)
+checks.append(("every terrain dummy's normal read", terrain_normals is not None
+               and terrain_normals.group(1) == counts.get("terrain")))
+normals = re.search(r"^Fix sph/normals: (\d+) wall normals \(-1 0 0\) for group barrier$", out,
+                    re.M)
+checks.append(("the barrier's normals set", normals is not None
+               and barrier and int(normals.group(1)) == barrier[-1]))
 result = re.search(r"^result: .* grains (\d+) left (\d+) steps (\d+)", out, re.M)
 checks.append(("result line", result is not None))
 if result:

@@ -36,12 +36,14 @@ def run_tool(*args):
 
 
 def read_data(path):
-    """Atoms and WallNormals of a data file the tool wrote: ids, types, x (n,3), normals
-    (n,3) in id order, and the box."""
+    """Atoms of a data file the tool wrote and WallNormals of the normals file beside it:
+    ids, types, x (n,3), normals (n,3) in id order, and the box."""
     sections, cur, box = {}, None, {}
     with open(path) as f:
-        lines = f.read().split("\n")
-    for line in lines[1:]:
+        lines = f.read().split("\n")[1:]
+    with open(terrain.normals_path(path)) as f:
+        lines += f.read().split("\n")
+    for line in lines:
         s = line.split("#")[0].strip()
         if not s:
             continue
@@ -429,8 +431,8 @@ class TestGridErrors(TmpDir):
 
 
 class TestLammpsRead(TmpDir):
-    """LAMMPS reads the WallNormals section into a per-atom array through fix
-    property/atom, as the doc says; built from numpy alone (no GDAL needed)."""
+    """LAMMPS reads the data file, and fix sph/normals the normals file beside it, as the
+    doc says; built from numpy alone (no GDAL needed)."""
 
     def test_read_data(self):
         a, dx = 0.3, 0.02
@@ -442,20 +444,21 @@ class TestLammpsRead(TmpDir):
         self.assertEqual(dropped, 0)
         lo, hi = terrain.box_for(X, S, dx, 0.1, ((0, 0.2), (0, 0.1)))
         data = self.path("terrain.data")
-        terrain.write_data(data, X, N, 2, 2, (lo, hi), "test terrain")
+        terrain.write_data(data, X, 2, 2, (lo, hi), "test terrain")
+        terrain.write_normals(terrain.normals_path(data), N, data)
         with open(self.path("in.read"), "w") as f:
-            f.write("""units si
+            f.write("""plugin load gransphplugin.so
+units si
 atom_style atomic
-fix NORMALS all property/atom d2_wall_normal 3 ghost yes
-read_data terrain.data fix NORMALS NULL WallNormals
+read_data terrain.data
 mass * 1.0
 group walls type 2
-compute n walls property/atom d2_wall_normal[1] d2_wall_normal[2] d2_wall_normal[3]
-compute nsum walls reduce sum c_n[1] c_n[2] c_n[3]
+fix NORMALS walls sph/normals file terrain.normals
+compute nsum walls reduce sum f_NORMALS[1] f_NORMALS[2] f_NORMALS[3]
 thermo_style custom step atoms c_nsum[1] c_nsum[2] c_nsum[3]
 thermo_modify format float %.15g
-write_dump walls custom normals.dump id type x y z d2_wall_normal[1] d2_wall_normal[2] &
-           d2_wall_normal[3] modify sort id format float %.17g
+write_dump walls custom normals.dump id type x y z f_NORMALS[1] f_NORMALS[2] &
+           f_NORMALS[3] modify sort id format float %.17g
 run 0
 """)
         env = dict(os.environ, OMP_NUM_THREADS="1")
