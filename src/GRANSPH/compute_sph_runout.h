@@ -4,12 +4,6 @@
    measure a runout, next to the outermost grain.
 ------------------------------------------------------------------------- */
 
-#ifdef COMPUTE_CLASS
-// clang-format off
-ComputeStyle(sph/runout,ComputeSPHRunout);
-// clang-format on
-#else
-
 #ifndef LMP_COMPUTE_SPH_RUNOUT_H
 #define LMP_COMPUTE_SPH_RUNOUT_H
 
@@ -44,5 +38,4 @@ class ComputeSPHRunout : public Compute {
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

@@ -4,12 +4,6 @@
    Lode angle, the mobilised strength of the integrator's model, and the regime.
 ------------------------------------------------------------------------- */
 
-#ifdef COMPUTE_CLASS
-// clang-format off
-ComputeStyle(sph/stress/atom,ComputeSPHStressAtom);
-// clang-format on
-#else
-
 #ifndef LMP_COMPUTE_SPH_STRESS_ATOM_H
 #define LMP_COMPUTE_SPH_STRESS_ATOM_H
 
@@ -37,5 +31,4 @@ class ComputeSPHStressAtom : public Compute {
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

@@ -4,12 +4,6 @@
    viscosity's size next to the granular stress.
 ------------------------------------------------------------------------- */
 
-#ifdef COMPUTE_CLASS
-// clang-format off
-ComputeStyle(sph/visc/atom,ComputeSPHViscAtom);
-// clang-format on
-#else
-
 #ifndef LMP_COMPUTE_SPH_VISC_ATOM_H
 #define LMP_COMPUTE_SPH_VISC_ATOM_H
 
@@ -34,5 +28,4 @@ class ComputeSPHViscAtom : public Compute {
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

@@ -3,12 +3,6 @@
    dummy particles and its normal component (paper eqs. 9-10).
 ------------------------------------------------------------------------- */
 
-#ifdef COMPUTE_CLASS
-// clang-format off
-ComputeStyle(sph/wallforce,ComputeSPHWallForce);
-// clang-format on
-#else
-
 #ifndef LMP_COMPUTE_SPH_WALLFORCE_H
 #define LMP_COMPUTE_SPH_WALLFORCE_H
 
@@ -33,5 +27,4 @@ class ComputeSPHWallForce : public Compute {
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

@@ -3,14 +3,6 @@
    wall's dummy particles is reduced where the forces are, on the device.
 ------------------------------------------------------------------------- */
 
-#ifdef COMPUTE_CLASS
-// clang-format off
-ComputeStyle(sph/wallforce/kk,ComputeSPHWallForceKokkos<LMPDeviceType>);
-ComputeStyle(sph/wallforce/kk/device,ComputeSPHWallForceKokkos<LMPDeviceType>);
-ComputeStyle(sph/wallforce/kk/host,ComputeSPHWallForceKokkos<LMPHostType>);
-// clang-format on
-#else
-
 #ifndef LMP_COMPUTE_SPH_WALLFORCE_KOKKOS_H
 #define LMP_COMPUTE_SPH_WALLFORCE_KOKKOS_H
 
@@ -29,5 +21,4 @@ template <class DeviceType> class ComputeSPHWallForceKokkos : public ComputeSPHW
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

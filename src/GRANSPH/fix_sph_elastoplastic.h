@@ -2,12 +2,6 @@
    GRANSPH: granular SPH integrator with the elastoplastic Drucker-Prager model.
 ------------------------------------------------------------------------- */
 
-#ifdef FIX_CLASS
-// clang-format off
-FixStyle(sph/elastoplastic,FixSPHElastoplastic);
-// clang-format on
-#else
-
 #ifndef LMP_FIX_SPH_ELASTOPLASTIC_H
 #define LMP_FIX_SPH_ELASTOPLASTIC_H
 
@@ -23,5 +17,4 @@ extern template class FixSPHModel<GRANSPH::DruckerPrager>;
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

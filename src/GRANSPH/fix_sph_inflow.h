@@ -5,12 +5,6 @@
    (the wavy jet of Chen et al. 2019, section 5.4, eq. 37).
 ------------------------------------------------------------------------- */
 
-#ifdef FIX_CLASS
-// clang-format off
-FixStyle(sph/inflow,FixSPHInflow);
-// clang-format on
-#else
-
 #ifndef LMP_FIX_SPH_INFLOW_H
 #define LMP_FIX_SPH_INFLOW_H
 
@@ -62,5 +56,4 @@ class FixSPHInflow : public Fix {
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

@@ -6,14 +6,6 @@
    to the host on every step for this fix's post_integrate and end_of_step.
 ------------------------------------------------------------------------- */
 
-#ifdef FIX_CLASS
-// clang-format off
-FixStyle(sph/inflow/kk,FixSPHInflowKokkos);
-FixStyle(sph/inflow/kk/device,FixSPHInflowKokkos);
-FixStyle(sph/inflow/kk/host,FixSPHInflowKokkos);
-// clang-format on
-#else
-
 #ifndef LMP_FIX_SPH_INFLOW_KOKKOS_H
 #define LMP_FIX_SPH_INFLOW_KOKKOS_H
 
@@ -30,5 +22,4 @@ class FixSPHInflowKokkos : public FixSPHInflow {
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

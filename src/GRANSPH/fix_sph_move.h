@@ -3,12 +3,6 @@
    velocity, in step with the GRANSPH predictor-corrector at any timestep.
 ------------------------------------------------------------------------- */
 
-#ifdef FIX_CLASS
-// clang-format off
-FixStyle(sph/move,FixSPHMove);
-// clang-format on
-#else
-
 #ifndef LMP_FIX_SPH_MOVE_H
 #define LMP_FIX_SPH_MOVE_H
 
@@ -46,5 +40,4 @@ class FixSPHMove : public Fix {
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

@@ -3,14 +3,6 @@
    host, as in the plain fix; the atoms move on the Kokkos device.
 ------------------------------------------------------------------------- */
 
-#ifdef FIX_CLASS
-// clang-format off
-FixStyle(sph/move/kk,FixSPHMoveKokkos<LMPDeviceType>);
-FixStyle(sph/move/kk/device,FixSPHMoveKokkos<LMPDeviceType>);
-FixStyle(sph/move/kk/host,FixSPHMoveKokkos<LMPHostType>);
-// clang-format on
-#else
-
 #ifndef LMP_FIX_SPH_MOVE_KOKKOS_H
 #define LMP_FIX_SPH_MOVE_KOKKOS_H
 
@@ -29,5 +21,4 @@ template <class DeviceType> class FixSPHMoveKokkos : public FixSPHMove {
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

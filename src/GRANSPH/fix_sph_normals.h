@@ -13,12 +13,6 @@
    by every LAMMPS version, plain and Kokkos alike.
 ------------------------------------------------------------------------- */
 
-#ifdef FIX_CLASS
-// clang-format off
-FixStyle(sph/normals,FixSPHNormals);
-// clang-format on
-#else
-
 #ifndef LMP_FIX_SPH_NORMALS_H
 #define LMP_FIX_SPH_NORMALS_H
 
@@ -64,5 +58,4 @@ class FixSPHNormals : public Fix {
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

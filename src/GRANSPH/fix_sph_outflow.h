@@ -3,12 +3,6 @@
    a region, e.g. sand flowing off the end of a flume.
 ------------------------------------------------------------------------- */
 
-#ifdef FIX_CLASS
-// clang-format off
-FixStyle(sph/outflow,FixSPHOutflow);
-// clang-format on
-#else
-
 #ifndef LMP_FIX_SPH_OUTFLOW_H
 #define LMP_FIX_SPH_OUTFLOW_H
 
@@ -41,5 +35,4 @@ class FixSPHOutflow : public Fix {
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

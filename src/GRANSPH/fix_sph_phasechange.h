@@ -3,12 +3,6 @@
    Dunatunga & Kamrin (2015).
 ------------------------------------------------------------------------- */
 
-#ifdef FIX_CLASS
-// clang-format off
-FixStyle(sph/phasechange,FixSPHPhaseChange);
-// clang-format on
-#else
-
 #ifndef LMP_FIX_SPH_PHASECHANGE_H
 #define LMP_FIX_SPH_PHASECHANGE_H
 
@@ -29,5 +23,4 @@ extern template class FixSPHModel<GRANSPH::PhaseChange>;
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

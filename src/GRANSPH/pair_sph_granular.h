@@ -3,12 +3,6 @@
    the stress and force of dummy-wall particles.
 ------------------------------------------------------------------------- */
 
-#ifdef PAIR_CLASS
-// clang-format off
-PairStyle(sph/granular,PairSPHGranular);
-// clang-format on
-#else
-
 #ifndef LMP_PAIR_SPH_GRANULAR_H
 #define LMP_PAIR_SPH_GRANULAR_H
 
@@ -119,5 +113,4 @@ class PairSPHGranular : public Pair {
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif

@@ -4,14 +4,6 @@
    per thread writing only to itself: no atomics.
 ------------------------------------------------------------------------- */
 
-#ifdef PAIR_CLASS
-// clang-format off
-PairStyle(sph/granular/kk,PairSPHGranularKokkos<LMPDeviceType>);
-PairStyle(sph/granular/kk/device,PairSPHGranularKokkos<LMPDeviceType>);
-PairStyle(sph/granular/kk/host,PairSPHGranularKokkos<LMPHostType>);
-// clang-format on
-#else
-
 #ifndef LMP_PAIR_SPH_GRANULAR_KOKKOS_H
 #define LMP_PAIR_SPH_GRANULAR_KOKKOS_H
 
@@ -78,5 +70,4 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
 
 }    // namespace LAMMPS_NS
 
-#endif
 #endif
