@@ -194,6 +194,7 @@ void FixSPHIntegrate::init()
 // see it, and a copy of what that evaluation overwrites if this run continues the last
 void FixSPHIntegrate::setup_pre_force(int /*vflag*/)
 {
+  sync_host();
   if (geostatic_flag && !restored) init_geostatic_stress();
   geostatic_flag = 0;
   fresh_start = why_not_continue();
@@ -201,6 +202,7 @@ void FixSPHIntegrate::setup_pre_force(int /*vflag*/)
     forget_steps();
   else
     save_step();
+  modified_host();
 }
 
 // Before any output of the run. Continuing, the first step uses the rates, the
@@ -208,6 +210,7 @@ void FixSPHIntegrate::setup_pre_force(int /*vflag*/)
 // have without the run boundary; otherwise those of the setup evaluation at t.
 void FixSPHIntegrate::setup(int /*vflag*/)
 {
+  sync_host();
   check_plane();
   check_finite();
   if (fresh_start) {
@@ -220,6 +223,7 @@ void FixSPHIntegrate::setup(int /*vflag*/)
   const GRANSPH::PairSettings *settings = pair_settings(force);
   ran_with_pair_settings = settings != nullptr;
   if (settings) last_pair_settings = *settings;
+  modified_host();
 }
 
 void FixSPHIntegrate::end_of_step()
@@ -276,12 +280,7 @@ void FixSPHIntegrate::save_step()
   const int nlocal = atom->nlocal;
   const int size = row_size();
   saved.resize((size_t) nlocal * size);
-  for (int i = 0; i < nlocal; ++i) {
-    double *row = &saved[(size_t) i * size];
-    memcpy(row, state[i], NSTATE * sizeof(double));
-    memcpy(row + NSTATE, rates[i], nrates * sizeof(double));
-    memcpy(row + NSTATE + nrates, start[i], NSTART * sizeof(double));
-  }
+  for (int i = 0; i < nlocal; ++i) pack_row(i, &saved[(size_t) i * size]);
 }
 
 // atoms without a step (created since) keep the rates of the setup evaluation
@@ -298,9 +297,7 @@ void FixSPHIntegrate::restore_step()
       fresh[0] += grain;
       continue;
     }
-    memcpy(state[i], row, NSTATE * sizeof(double));
-    memcpy(rates[i], row + NSTATE, nrates * sizeof(double));
-    memcpy(start[i], row + NSTATE + nrates, NSTART * sizeof(double));
+    unpack_row(i, row);
   }
   std::vector<double>().swap(saved);
   bigint total[2];
@@ -495,21 +492,25 @@ void FixSPHIntegrate::grow_arrays(int nmax)
 void FixSPHIntegrate::copy_arrays(int i, int j, int /*delflag*/)
 {
   if (i == j) return;    // LAMMPS copies the last atom onto itself when deleting it
+  sync_host();
   memcpy(state[j], state[i], NSTATE * sizeof(double));
   memcpy(rates[j], rates[i], nrates * sizeof(double));
   memcpy(start[j], start[i], NSTART * sizeof(double));
+  modified_host();
 }
 
 // new atoms (create_atoms, read_data, inflow fixes) start at rest and stress-free
 void FixSPHIntegrate::set_arrays(int i)
 {
+  sync_host();
   state[i][RHO] = rho_init;
   for (int k = 1; k < NSTATE; ++k) state[i][k] = 0.0;    // stress-free, ELASTIC
   for (int k = 0; k < nrates; ++k) rates[i][k] = 0.0;
   for (int k = 0; k < NSTART; ++k) start[i][k] = 0.0;
+  modified_host();
 }
 
-int FixSPHIntegrate::pack_exchange(int i, double *buf)
+int FixSPHIntegrate::pack_row(int i, double *buf) const
 {
   int m = 0;
   for (int k = 0; k < NSTATE; ++k) buf[m++] = state[i][k];
@@ -518,12 +519,26 @@ int FixSPHIntegrate::pack_exchange(int i, double *buf)
   return m;
 }
 
-int FixSPHIntegrate::unpack_exchange(int nlocal, double *buf)
+int FixSPHIntegrate::unpack_row(int i, const double *buf)
 {
   int m = 0;
-  for (int k = 0; k < NSTATE; ++k) state[nlocal][k] = buf[m++];
-  for (int k = 0; k < nrates; ++k) rates[nlocal][k] = buf[m++];
-  for (int k = 0; k < NSTART; ++k) start[nlocal][k] = buf[m++];
+  for (int k = 0; k < NSTATE; ++k) state[i][k] = buf[m++];
+  for (int k = 0; k < nrates; ++k) rates[i][k] = buf[m++];
+  for (int k = 0; k < NSTART; ++k) start[i][k] = buf[m++];
+  return m;
+}
+
+int FixSPHIntegrate::pack_exchange(int i, double *buf)
+{
+  sync_host();
+  return pack_row(i, buf);
+}
+
+int FixSPHIntegrate::unpack_exchange(int nlocal, double *buf)
+{
+  sync_host();
+  const int m = unpack_row(nlocal, buf);
+  modified_host();
   return m;
 }
 
@@ -548,6 +563,7 @@ void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
   const int size = static_cast<int>(extra[nlocal][m++]) - 1;
   const double *row = &extra[nlocal][m];
   const int other_nrates = nrates == NRATES ? RATES_DT : NRATES;
+  sync_host();
   memcpy(state[nlocal], row, NSTATE * sizeof(double));
   restored = 1;
   for (const int nstate : {NSTATE, STATE_WITH_VISC})
@@ -557,8 +573,10 @@ void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
           rates[nlocal][k] = k < RATES_DT || nr == nrates ? row[nstate + k] : 0.0;
         memcpy(start[nlocal], row + nstate + nr, NSTART * sizeof(double));
         if (nr != nrates) start[nlocal][STEPPED] = fmin(start[nlocal][STEPPED], 1.0);
+        modified_host();
         return;
       }
+  modified_host();
 }
 
 int FixSPHIntegrate::size_restart(int /*nlocal*/)
@@ -574,6 +592,7 @@ int FixSPHIntegrate::maxsize_restart()
 int FixSPHIntegrate::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
                                        int * /*pbc*/)
 {
+  sync_host(STATE_ONLY);
   int m = 0;
   for (int i = 0; i < n; ++i)
     for (int k = 0; k < NCOMM; ++k) buf[m++] = state[list[i]][k];
@@ -582,9 +601,11 @@ int FixSPHIntegrate::pack_forward_comm(int n, int *list, double *buf, int /*pbc_
 
 void FixSPHIntegrate::unpack_forward_comm(int n, int first, double *buf)
 {
+  sync_host(STATE_ONLY);
   int m = 0;
   for (int i = first; i < first + n; ++i)
     for (int k = 0; k < NCOMM; ++k) state[i][k] = buf[m++];
+  modified_host(STATE_ONLY);
 }
 
 double FixSPHIntegrate::memory_usage()

@@ -78,7 +78,7 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   // the friction coefficient at which the model's layers slide (pair_style sph/granular
   // wall/friction group material)
   virtual double slide_friction() const = 0;
-  virtual void sync_state_host() {}    // the plain fix keeps it there
+  void sync_state_host() { sync_host(STATE_ONLY); }
   void gravity_vector(double *g) const;  // acceleration of the fix gravity on the grains
   // At a run's setup: whether the run continues the last step's (its first step takes
   // the rates, and the dummies the forces, of that step rather than of the setup
@@ -100,6 +100,13 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   double surface_height;
   int restored;         // state came from a restart file
 
+  // Where the host callbacks find the arrays: the Kokkos twin's DualViews are brought to
+  // the host before a callback reads them (sync_host) and marked changed there after it
+  // writes them (modified_host), all three or `state` alone; the plain fix keeps them there
+  enum Arrays { ALL_ARRAYS, STATE_ONLY };
+  virtual void sync_host(Arrays = ALL_ARRAYS) {}
+  virtual void modified_host(Arrays = ALL_ARRAYS) {}
+
   double smoothing_length() const;
   void check_finite() const;
   void stop_if_atoms_lost() const;
@@ -120,6 +127,9 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   void forget_steps();
   void save_step();
   void restore_step();
+  // an atom's row of all per-atom values (row_size()), as exchange and restart carry it
+  int pack_row(int i, double *buf) const;
+  int unpack_row(int i, const double *buf);
 };
 
 }    // namespace LAMMPS_NS

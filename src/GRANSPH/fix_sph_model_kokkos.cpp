@@ -111,9 +111,7 @@ template <class DeviceType, class Model>
 void FixSPHModelKokkos<DeviceType, Model>::setup_pre_force(int vflag)
 {
   this->atomKK->sync(Host, X_MASK | MASK_MASK);
-  sync_host();
   FixSPHModel<Model>::setup_pre_force(vflag);
-  modified_host();
 }
 
 // the checks and the continuation work on the host copies, once per run
@@ -121,9 +119,7 @@ template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Mode
 {
   this->atomKK->sync(this->execution_space, this->datamask_read);
   this->atomKK->sync(Host, X_MASK | V_MASK | MASK_MASK | TAG_MASK);
-  sync_host();
   FixSPHModel<Model>::setup(vflag);
-  modified_host();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -284,13 +280,6 @@ template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Mode
   sync_host();
 }
 
-// for host readers of the state between output steps (compute sph/stress/atom)
-template <class DeviceType, class Model>
-void FixSPHModelKokkos<DeviceType, Model>::sync_state_host()
-{
-  k_state.template sync<LMPHostType>();
-}
-
 /* ----------------------------------------------------------------------
    forward communication of rho and sigma: on the device, or through the
    host buffers when comm/kokkos chooses the classic path
@@ -331,36 +320,24 @@ void FixSPHModelKokkos<DeviceType, Model>::unpack_forward_comm_device(
   k_state.template modify<DeviceType>();
 }
 
-template <class DeviceType, class Model>
-int FixSPHModelKokkos<DeviceType, Model>::pack_forward_comm(int n, int *list, double *buf,
-                                                            int pbc_flag, int *pbc)
-{
-  k_state.template sync<LMPHostType>();
-  return FixSPHModel<Model>::pack_forward_comm(n, list, buf, pbc_flag, pbc);
-}
-
-template <class DeviceType, class Model>
-void FixSPHModelKokkos<DeviceType, Model>::unpack_forward_comm(int n, int first, double *buf)
-{
-  k_state.template sync<LMPHostType>();
-  FixSPHModel<Model>::unpack_forward_comm(n, first, buf);
-  k_state.template modify<LMPHostType>();
-}
-
 /* ----------------------------------------------------------------------
    host callbacks: the base class works on the host copies
 ------------------------------------------------------------------------- */
 
-template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::sync_host()
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::sync_host(Arrays arrays)
 {
   k_state.template sync<LMPHostType>();
+  if (arrays == FixSPHIntegrate::STATE_ONLY) return;
   k_rates.template sync<LMPHostType>();
   k_start.template sync<LMPHostType>();
 }
 
-template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::modified_host()
+template <class DeviceType, class Model>
+void FixSPHModelKokkos<DeviceType, Model>::modified_host(Arrays arrays)
 {
   k_state.template modify<LMPHostType>();
+  if (arrays == FixSPHIntegrate::STATE_ONLY) return;
   k_rates.template modify<LMPHostType>();
   k_start.template modify<LMPHostType>();
 }
@@ -373,53 +350,6 @@ void FixSPHModelKokkos<DeviceType, Model>::grow_arrays(int nmax)
   this->memoryKK->grow_kokkos(k_rates, this->rates, nmax, this->nrates, "sph:rates");
   this->memoryKK->grow_kokkos(k_start, this->start, nmax, FSI::NSTART, "sph:start");
   this->array_atom = this->state;
-}
-
-template <class DeviceType, class Model>
-void FixSPHModelKokkos<DeviceType, Model>::copy_arrays(int i, int j, int delflag)
-{
-  sync_host();
-  FixSPHModel<Model>::copy_arrays(i, j, delflag);
-  modified_host();
-}
-
-template <class DeviceType, class Model>
-void FixSPHModelKokkos<DeviceType, Model>::set_arrays(int i)
-{
-  sync_host();
-  FixSPHModel<Model>::set_arrays(i);
-  modified_host();
-}
-
-template <class DeviceType, class Model>
-int FixSPHModelKokkos<DeviceType, Model>::pack_exchange(int i, double *buf)
-{
-  sync_host();
-  return FixSPHModel<Model>::pack_exchange(i, buf);
-}
-
-template <class DeviceType, class Model>
-int FixSPHModelKokkos<DeviceType, Model>::unpack_exchange(int nlocal, double *buf)
-{
-  sync_host();
-  const int m = FixSPHModel<Model>::unpack_exchange(nlocal, buf);
-  modified_host();
-  return m;
-}
-
-template <class DeviceType, class Model>
-int FixSPHModelKokkos<DeviceType, Model>::pack_restart(int i, double *buf)
-{
-  sync_host();
-  return FixSPHModel<Model>::pack_restart(i, buf);
-}
-
-template <class DeviceType, class Model>
-void FixSPHModelKokkos<DeviceType, Model>::unpack_restart(int nlocal, int nth)
-{
-  sync_host();
-  FixSPHModel<Model>::unpack_restart(nlocal, nth);
-  modified_host();
 }
 
 namespace LAMMPS_NS {

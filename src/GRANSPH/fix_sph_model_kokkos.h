@@ -33,17 +33,8 @@ class FixSPHModelKokkos : public FixSPHModel<Model>, public KokkosBase, public S
   void end_of_step() override;
   void post_run() override;
   void forward_comm_state() override;
-  void sync_state_host() override;
 
   void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
-  void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int pack_forward_comm(int, int *, double *, int, int *) override;
-  void unpack_forward_comm(int, int, double *) override;
   GRANSPH_KOKKOS_FIX_FORWARD_COMM
   GRANSPH_KOKKOS_FIX_DEVICE_EXCHANGE(k_state, k_rates, k_start)
   int pack_forward_comm_device(int, const typename GRANSPHCompat::KokkosTypes<DeviceType>::SendList &,
@@ -56,9 +47,10 @@ class FixSPHModelKokkos : public FixSPHModel<Model>, public KokkosBase, public S
   int step_on_device(GRANSPH::Stage stage);
   void reset_cfl_timestep() override;
 
- private:
-  void sync_host();
-  void modified_host();
+ protected:
+  using Arrays = FixSPHIntegrate::Arrays;
+  void sync_host(Arrays = FixSPHIntegrate::ALL_ARRAYS) override;
+  void modified_host(Arrays = FixSPHIntegrate::ALL_ARRAYS) override;
 };
 
 }    // namespace LAMMPS_NS
