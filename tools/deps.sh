@@ -21,7 +21,8 @@ TRILINOS_SHA256=0ddb47784ba7b8a6b9a07a4822b33be508feb4ccd54301b2a5d10c9e54524b90
 
 APT_PACKAGES=(build-essential cmake ninja-build ccache dpkg-dev xz-utils
   libopenmpi-dev openmpi-bin libeigen3-dev libgtest-dev libgmock-dev libyaml-dev
-  libpng-dev python3-numpy python3-matplotlib python3-gdal python3-stl)
+  libpng-dev python3-numpy python3-matplotlib python3-gdal python3-stl
+  python3-sphinx python3-myst-parser)
 
 log() { printf '[deps] %s\n' "$*"; }
 
