@@ -150,26 +150,7 @@ void PairSPHGranular::compute(int eflag, int vflag)
   const HostAtoms atoms{list->firstneigh, list->numneigh, atom->mask, fix.groupbit, fix.wallbit,
                         normals, friction, slide};
   const HostParticles listed(sum_options(limited), atoms, particles);
-  const HostParticles p = config.prune > 0.0 ? pruned(listed, nall) : listed;
-  if (update->setupflag) {
-    check_no_coincident(p);
-    if (fix.wallbit) check_wall_spacing();
-  }
-  if (fix.wallbit) {
-    walls(p, !limited);
-    fix.forward_comm_state();
-    pack_particles(atom->nlocal, nall);
-  }
-  if (config.mixed_precision) {
-    if (update->setupflag) warn_if_far_from_single_origin();
-    pack_particles_single(nall);
-    grains(p.in_single(particles_single));
-  } else
-    grains(p);
-  if (limited) {
-    forward_comm_friction_slide();
-    wall_forces(p);
-  }
+  evaluate_passes(*this, config.prune > 0.0 ? pruned(listed, nall) : listed, limited);
 }
 
 double PairSPHGranular::pruned_cutsq() const
@@ -575,12 +556,13 @@ void PairSPHGranular::pack_particles(int from, int to)
 
 // the single-precision copy of atoms [0, n) for the grains' sums, with the dummies'
 // stress of this evaluation in place
-void PairSPHGranular::pack_particles_single(int n)
+const GRANSPH::PairParticleSingle *PairSPHGranular::pack_particles_single(int n)
 {
   double origin[3];
   single_precision_origin(origin);
   for (int i = 0; i < n; ++i)
     particles_single[i] = GRANSPH::PairParticleSingle::of(particles[i], origin);
+  return particles_single;
 }
 
 // Under precision mixed: the centre of this rank's sub-domain (of the box if it is

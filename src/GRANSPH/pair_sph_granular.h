@@ -8,13 +8,15 @@
 
 #include "pair.h"
 
+#include "atom.h"
+#include "fix_sph_integrate.h"
 #include "gransph_pair_settings.h"
+#include "update.h"
 
 #include <vector>
 
 namespace LAMMPS_NS {
 
-class FixSPHIntegrate;
 class FixSPHNormals;
 
 class PairSPHGranular : public Pair {
@@ -60,6 +62,14 @@ class PairSPHGranular : public Pair {
   void pruned_anew(int nall);    // counted in pvector[0], which compute pair reports
   int pruned_nall;    // the atoms, owned and ghost, of the last pruning (-1: none)
 
+  // The passes of an evaluation over p, the particles as the twin's accessor reads them,
+  // in the one order of both twins: at a run's setup the checks; the dummies' stress (eq.
+  // 8) and, without walls of a friction of their own (limited), the grains' forces on them
+  // (eq. 9); the grains' rates; with such walls, then the dummies' forces. Twin: this style
+  // or its Kokkos twin, whose steps of the same names take the data where it lives.
+  template <class Twin, class Particles>
+  void evaluate_passes(Twin &twin, const Particles &p, bool limited);
+
   void allocate();
   void stop_if_coincident(int i);
   // at a run's setup, collective: the dummies' spacing against the grains' (on the host)
@@ -100,7 +110,7 @@ class PairSPHGranular : public Pair {
 
   void grow(int n);
   void pack_particles(int from, int to);
-  void pack_particles_single(int n);
+  const GRANSPH::PairParticleSingle *pack_particles_single(int n);
   template <class Particles> void check_no_coincident(const Particles &p);
 
   template <class Particles> void walls(const Particles &p, bool with_forces);
@@ -110,6 +120,31 @@ class PairSPHGranular : public Pair {
   template <class Particles> Particles pruned(const Particles &p, int nall);
   template <class Particles> void viscous_pressures(const Particles &p);
 };
+
+template <class Twin, class Particles>
+void PairSPHGranular::evaluate_passes(Twin &twin, const Particles &p, bool limited)
+{
+  FixSPHIntegrate &fix = *integrator;
+  const int nall = atom->nlocal + atom->nghost;
+  if (update->setupflag) {
+    twin.check_no_coincident(p);
+    if (fix.wallbit) twin.check_wall_spacing();
+  }
+  if (fix.wallbit) {
+    twin.walls(p, !limited);
+    fix.forward_comm_state();    // the ghosts get the dummies' new stress
+    twin.pack_particles(atom->nlocal, nall);
+  }
+  if (config.mixed_precision) {
+    if (update->setupflag) warn_if_far_from_single_origin();
+    twin.grains(p.in_single(twin.pack_particles_single(nall)));
+  } else
+    twin.grains(p);
+  if (limited) {
+    forward_comm_friction_slide();
+    twin.wall_forces(p);
+  }
+}
 
 }    // namespace LAMMPS_NS
 

@@ -129,7 +129,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   // with rows pruned since the last list build, the pack also finds how far the atoms
   // have moved since (one pass, one parallel region)
   const bool pruned_rows_may_stay = config.prune > 0.0 && !rows_outdated(nall);
-  const double moved_sq = pack_particles(kk, 0, nall, pruned_rows_may_stay);
+  const double moved_sq = pack_particles(0, nall, pruned_rows_may_stay);
 
   const bool limited = fix.wallbit && config.has_friction_walls();
   DeviceAtoms<DeviceType> atoms;
@@ -155,51 +155,37 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
     atoms.friction_slide = k_slide.template view<DeviceType>();
   }
   DeviceParticles<DeviceType> p(sum_options(limited), atoms, d_particles);
-
-  if (update->setupflag && fix.wallbit) {
-    atomKK->sync(Host, X_MASK | MASK_MASK | TYPE_MASK | RMASS_MASK);
-    check_wall_spacing();
-  }
   if (config.prune > 0.0) prune_rows(p, nall, moved_sq);
-  if (update->setupflag) {    // no two interacting particles on one place
-    auto ilist = k_list->d_ilist;
-    int found = -1;
-    Kokkos::parallel_reduce(
-        Kokkos::RangePolicy<DeviceType>(0, list->inum),
-        LAMMPS_LAMBDA(const int ii, int &last) {
-          const int i = ilist(ii);
-          if (i > last && GRANSPH::has_coincident_neighbour(p, i)) last = i;
-        },
-        Kokkos::Max<int>(found));
-    if (found >= 0) atomKK->sync(Host, X_MASK | TAG_MASK);
-    stop_if_coincident(found);
-  }
-  if (fix.wallbit) {
-    walls(p, kk, !limited);
-    kk.k_state.template modify<DeviceType>();
-    kk.k_start.template modify<DeviceType>();
-    fix.forward_comm_state();
-    pack_particles(kk, nlocal, nall);
-  }
-  if (config.mixed_precision) {
-    if (update->setupflag) warn_if_far_from_single_origin();
-    pack_particles_single(nall);
-    grains(p.in_single(d_particles_single), kk);
-  } else
-    grains(p, kk);
-  kk.k_rates.template modify<DeviceType>();
-  if (limited) {
-    k_slide.template modify<DeviceType>();
-    forward_comm_friction_slide();
-    k_slide.template sync<DeviceType>();
-    wall_forces(p, kk);
-    kk.k_start.template modify<DeviceType>();
-  }
+  evaluate_passes(*this, p, limited);
   atomKK->modified(execution_space, datamask_modify);
   if (vflag_atom) {
     k_vatom.template modify<DeviceType>();
     k_vatom.sync_host();
   }
+}
+
+// at a run's setup: no two interacting particles on one place
+template <class DeviceType>
+void PairSPHGranularKokkos<DeviceType>::check_no_coincident(const DeviceParticles<DeviceType> &p)
+{
+  auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
+  int found = -1;
+  Kokkos::parallel_reduce(
+      Kokkos::RangePolicy<DeviceType>(0, list->inum),
+      LAMMPS_LAMBDA(const int ii, int &last) {
+        const int i = ilist(ii);
+        if (i > last && GRANSPH::has_coincident_neighbour(p, i)) last = i;
+      },
+      Kokkos::Max<int>(found));
+  if (found >= 0) atomKK->sync(Host, X_MASK | TAG_MASK);
+  stop_if_coincident(found);
+}
+
+// the dummies' spacing, on the host
+template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::check_wall_spacing()
+{
+  atomKK->sync(Host, X_MASK | MASK_MASK | TYPE_MASK | RMASS_MASK);
+  PairSPHGranular::check_wall_spacing();
 }
 
 // The wall normals (and with `limited` the dummies' friction) on the device: packed on
@@ -281,8 +267,7 @@ void PairSPHGranularKokkos<DeviceType>::unpack_forward_comm_device(
 // (the neighbour sums read it, and add nothing from it). Returns, since_pruned, the
 // largest squared distance any of them has moved since the rows were pruned.
 template <class DeviceType>
-double PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int from, int to,
-                                                         bool since_pruned)
+double PairSPHGranularKokkos<DeviceType>::pack_particles(int from, int to, bool since_pruned)
 {
   double farthest = 0.0;
   if (from >= to) return farthest;
@@ -293,7 +278,7 @@ double PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int
   auto type = atomKK->k_type.template view<DeviceType>();
   auto rmass = atomKK->k_rmass.template view<DeviceType>();
   auto mass = atomKK->k_mass.template view<DeviceType>();
-  const auto state = kk.template state_on<DeviceType>();
+  const auto state = state_kk->template state_on<DeviceType>();
   const int sphbits = integrator->groupbit | integrator->wallbit;
   const int use_rmass = atom->rmass != nullptr;
   const double E = integrator->material.E;
@@ -323,10 +308,10 @@ double PairSPHGranularKokkos<DeviceType>::pack_particles(SPHStateKokkos &kk, int
 }
 
 // what adds the grains' forces to the dummy particles in this evaluation
-template <class DeviceType> auto PairSPHGranularKokkos<DeviceType>::dummy_forces(SPHStateKokkos &kk)
+template <class DeviceType> auto PairSPHGranularKokkos<DeviceType>::dummy_forces()
 {
   return make_dummy_forces(atomKK->k_f.template view<DeviceType>(),
-                           kk.template state_on<DeviceType>(),
+                           state_kk->template state_on<DeviceType>(),
                            k_vatom.template view<DeviceType>(), force->ftm2v, vflag_either != 0,
                            vflag_atom != 0, repeats_last_wall_forces());
 }
@@ -336,12 +321,12 @@ template <class DeviceType> auto PairSPHGranularKokkos<DeviceType>::dummy_forces
 // which need a wall's own new stress only
 template <class DeviceType>
 void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> &p,
-                                              SPHStateKokkos &kk, bool with_forces)
+                                              bool with_forces)
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
   auto particles = d_particles;
-  const auto state = kk.template state_on<DeviceType>();
-  const auto dummy = dummy_forces(kk);
+  const auto state = state_kk->template state_on<DeviceType>();
+  const auto dummy = dummy_forces();
   double g[3];
   integrator->gravity_vector(g);
   const double gx = g[0], gy = g[1], gz = g[2];
@@ -362,16 +347,18 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
       ev);
   if (vflag_global)
     for (int k = 0; k < 6; ++k) virial[k] += ev.v[k];
+  state_kk->k_state.template modify<DeviceType>();
+  state_kk->k_start.template modify<DeviceType>();
 }
 
 // the grains' forces on the dummy particles (eq. 9), once it is known how the grains
 // slide on the walls with a friction of their own (wall/friction)
 template <class DeviceType>
-void PairSPHGranularKokkos<DeviceType>::wall_forces(const DeviceParticles<DeviceType> &p,
-                                                    SPHStateKokkos &kk)
+void PairSPHGranularKokkos<DeviceType>::wall_forces(const DeviceParticles<DeviceType> &p)
 {
+  k_slide.template sync<DeviceType>();    // with the ghosts' (forward_comm_friction_slide)
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
-  const auto dummy = dummy_forces(kk);
+  const auto dummy = dummy_forces();
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
       ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
@@ -382,11 +369,14 @@ void PairSPHGranularKokkos<DeviceType>::wall_forces(const DeviceParticles<Device
       ev);
   if (vflag_global)
     for (int k = 0; k < 6; ++k) virial[k] += ev.v[k];
+  state_kk->k_start.template modify<DeviceType>();
 }
 
 // the single-precision copy of atoms [0, n) for the grains' sums, with the dummies'
 // stress of this evaluation in place
-template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::pack_particles_single(int n)
+template <class DeviceType>
+Kokkos::View<GRANSPH::PairParticleSingle *, DeviceType>
+PairSPHGranularKokkos<DeviceType>::pack_particles_single(int n)
 {
   if ((int) d_particles_single.extent(0) < n)
     d_particles_single = decltype(d_particles_single)(
@@ -401,6 +391,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::pack_particl
         const double o[3] = {ox, oy, oz};
         single(i) = GRANSPH::PairParticleSingle::of(particles(i), o);
       });
+  return single;
 }
 
 // p over rows pruned from its rows (GRANSPH::prune_row), made anew when outdated or when
@@ -448,10 +439,10 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
 // rates of the granular particles (eqs. 6, 7, 34, 35)
 template <class DeviceType>
 template <class Particles>
-void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p, SPHStateKokkos &kk)
+void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p)
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
-  const auto state = kk.template state_on<DeviceType>();
+  const auto state = state_kk->template state_on<DeviceType>();
   auto f = atomKK->k_f.template view<DeviceType>();
   auto vatom = k_vatom.template view<DeviceType>();
   const int want_virial = vflag_either, want_vatom = vflag_atom;
@@ -478,6 +469,8 @@ void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p, SPHStateKokko
   if (vflag_global)
     for (int k = 0; k < 6; ++k) virial[k] += ev.v[k];
   if (sums_viscous_pressure()) viscous_pressures(p);
+  state_kk->k_rates.template modify<DeviceType>();
+  if (limited) k_slide.template modify<DeviceType>();    // for forward_comm_friction_slide
 }
 
 // the viscous-pressure diagnostic of the owned atoms, for compute sph/visc/atom

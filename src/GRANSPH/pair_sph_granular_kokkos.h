@@ -34,13 +34,16 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
                                GRANSPHCompat::tdual_comm_buffer &);
   void unpack_forward_comm_device(int, int, GRANSPHCompat::tdual_comm_buffer &);
 
-  // device kernels (public: CUDA lambdas may not live in private members)
-  double pack_particles(SPHStateKokkos &kk, int from, int to, bool since_pruned = false);
-  void pack_particles_single(int n);
-  void walls(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk, bool with_forces);
-  void wall_forces(const DeviceParticles<DeviceType> &p, SPHStateKokkos &kk);
+  // the steps of PairSPHGranular::evaluate_passes on DeviceType, and the device kernels
+  // (public: CUDA lambdas may not live in private members)
+  void check_no_coincident(const DeviceParticles<DeviceType> &p);
+  void check_wall_spacing();
+  double pack_particles(int from, int to, bool since_pruned = false);
+  Kokkos::View<GRANSPH::PairParticleSingle *, DeviceType> pack_particles_single(int n);
+  void walls(const DeviceParticles<DeviceType> &p, bool with_forces);
+  void wall_forces(const DeviceParticles<DeviceType> &p);
   // Particles: DeviceParticles<DeviceType> or, under precision mixed, over PairParticleSingle
-  template <class Particles> void grains(const Particles &p, SPHStateKokkos &kk);
+  template <class Particles> void grains(const Particles &p);
   template <class Particles> void viscous_pressures(const Particles &p);
   void prune_rows(DeviceParticles<DeviceType> &p, int nall, double moved_sq);
 
@@ -65,7 +68,7 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   Kokkos::View<double *[3], DeviceType> d_pruned_x;
 
   int update_wall_normals(int nall, bool limited);
-  auto dummy_forces(SPHStateKokkos &kk);
+  auto dummy_forces();
 };
 
 }    // namespace LAMMPS_NS
