@@ -89,6 +89,13 @@ void FixSPHInflow::parse_keywords(int iarg, int narg, char **arg)
   auto number = [&](char *word) {
     return utils::numeric(FLERR, word, false, lmp);
   };
+  // the value of a keyword that must be > 0, past which iarg then points
+  auto positive = [&](const char *key) {
+    const double value = number(*values(key, 1));
+    if (value <= 0.0) error->all(FLERR, "Fix sph/inflow: {} must be > 0", key);
+    iarg += 2;
+    return value;
+  };
   bool have_center = false, have_wave = false;
 
   while (iarg < narg) {
@@ -108,17 +115,11 @@ void FixSPHInflow::parse_keywords(int iarg, int narg, char **arg)
       for (int a = 0; a < 3; ++a) normal[a] = number(v[a]);
       iarg += 4;
     } else if (strcmp(key, "radius") == 0) {
-      radius = number(*values(key, 1));
-      if (radius <= 0.0) error->all(FLERR, "Fix sph/inflow: radius must be > 0");
-      iarg += 2;
+      radius = positive(key);
     } else if (strcmp(key, "speed") == 0) {
-      speed = number(*values(key, 1));
-      if (speed <= 0.0) error->all(FLERR, "Fix sph/inflow: speed must be > 0");
-      iarg += 2;
+      speed = positive(key);
     } else if (strcmp(key, "spacing") == 0) {
-      spacing = number(*values(key, 1));
-      if (spacing <= 0.0) error->all(FLERR, "Fix sph/inflow: spacing must be > 0");
-      iarg += 2;
+      spacing = positive(key);
     } else if (strcmp(key, "wave") == 0) {
       char **v = values(key, 5);
       amplitude = number(v[0]);
@@ -132,13 +133,11 @@ void FixSPHInflow::parse_keywords(int iarg, int narg, char **arg)
       t_until = number(*values(key, 1));
       iarg += 2;
     } else if (strcmp(key, "mass") == 0) {
-      new_mass = number(*values(key, 1));
-      if (new_mass <= 0.0) error->all(FLERR, "Fix sph/inflow: mass must be > 0");
+      new_mass = positive(key);
       if (!atom->rmass_flag)
         error->all(FLERR,
                    "Fix sph/inflow: keyword mass needs an atom style with per-atom masses; "
                    "set the type's mass with the mass command");
-      iarg += 2;
     } else
       error->all(FLERR, "Fix sph/inflow: unknown keyword {}", key);
   }
