@@ -164,7 +164,7 @@ template <class DeviceType> void PairSPHGranularKokkos<DeviceType>::compute(int 
   }
 }
 
-// at a run's setup: no two interacting particles on one place
+// as PairSPHGranular::check_no_coincident
 template <class DeviceType>
 void PairSPHGranularKokkos<DeviceType>::check_no_coincident(const DeviceParticles<DeviceType> &p)
 {
@@ -263,9 +263,8 @@ void PairSPHGranularKokkos<DeviceType>::unpack_forward_comm_device(
   k_slide.template modify<DeviceType>();
 }
 
-// the pair data of atoms [from, to); an atom that is neither grain nor dummy massless
-// (the neighbour sums read it, and add nothing from it). Returns, since_pruned, the
-// largest squared distance any of them has moved since the rows were pruned.
+// as PairSPHGranular::pack_particles; returns, since_pruned, the largest squared distance
+// any of the atoms has moved since the rows were pruned
 template <class DeviceType>
 double PairSPHGranularKokkos<DeviceType>::pack_particles(int from, int to, bool since_pruned)
 {
@@ -316,9 +315,7 @@ template <class DeviceType> auto PairSPHGranularKokkos<DeviceType>::dummy_forces
                            vflag_atom != 0, repeats_last_wall_forces());
 }
 
-// dummy-particle stresses (eq. 8), with the wall acceleration from the velocity
-// change since the last evaluation, and with_forces the grains' forces on them (eq. 9),
-// which need a wall's own new stress only
+// as PairSPHGranular::walls
 template <class DeviceType>
 void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> &p,
                                               bool with_forces)
@@ -351,8 +348,7 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
   state_kk->k_start.template modify<DeviceType>();
 }
 
-// the grains' forces on the dummy particles (eq. 9), once it is known how the grains
-// slide on the walls with a friction of their own (wall/friction)
+// as PairSPHGranular::wall_forces
 template <class DeviceType>
 void PairSPHGranularKokkos<DeviceType>::wall_forces(const DeviceParticles<DeviceType> &p)
 {
@@ -372,8 +368,7 @@ void PairSPHGranularKokkos<DeviceType>::wall_forces(const DeviceParticles<Device
   state_kk->k_start.template modify<DeviceType>();
 }
 
-// the single-precision copy of atoms [0, n) for the grains' sums, with the dummies'
-// stress of this evaluation in place
+// as PairSPHGranular::pack_particles_single
 template <class DeviceType>
 Kokkos::View<GRANSPH::PairParticleSingle *, DeviceType>
 PairSPHGranularKokkos<DeviceType>::pack_particles_single(int n)
@@ -394,8 +389,8 @@ PairSPHGranularKokkos<DeviceType>::pack_particles_single(int n)
   return single;
 }
 
-// p over rows pruned from its rows (GRANSPH::prune_row), made anew when outdated or when
-// an atom has moved too far: moved_sq, the largest squared distance since the last pruning
+// as PairSPHGranular::pruned, in place; moved_sq: the largest squared distance since the
+// last pruning
 template <class DeviceType>
 void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &p, int nall,
                                                    double moved_sq)
@@ -436,7 +431,7 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
   p.numneigh = d_pruned_count;
 }
 
-// rates of the granular particles (eqs. 6, 7, 34, 35)
+// as PairSPHGranular::grains
 template <class DeviceType>
 template <class Particles>
 void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p)
@@ -473,7 +468,7 @@ void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p)
   if (limited) k_slide.template modify<DeviceType>();    // for forward_comm_friction_slide
 }
 
-// the viscous-pressure diagnostic of the owned atoms, for compute sph/visc/atom
+// as PairSPHGranular::viscous_pressures
 template <class DeviceType>
 template <class Particles>
 void PairSPHGranularKokkos<DeviceType>::viscous_pressures(const Particles &p)
