@@ -384,15 +384,24 @@ void FixSPHIntegrate::gravity_vector(double *g) const
 void FixSPHIntegrate::reset_cfl_timestep()
 {
   if (cfl == 0.0) return;
+  double local[2] = {-1.0, -DBL_MAX};
+  cfl_maxima(local);
+  double global[2];
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
+  if (global[0] < 0.0) return;    // no granular particles anywhere
+  const double rho = GRANSPH::cfl_density(-global[1], rho_init, cfl_sound_reference);
+  set_timestep(GRANSPH::cfl_timestep(cfl, smoothing_length(), sqrt(global[0]) * force->ftm2v,
+                                     GRANSPH::sound_speed(material.E, rho)));
+}
+
+void FixSPHIntegrate::cfl_maxima(double *local)
+{
   double **f = atom->f;
   const double *rmass = atom->rmass;
   const double *mass = atom->mass;
   const int *type = atom->type;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-
-  // max |a|^2 (negative without grains) and, local, minus the grains' lowest density
-  double local[2] = {-1.0, -DBL_MAX};
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
     const double m = rmass ? rmass[i] : mass[type[i]];
@@ -400,12 +409,6 @@ void FixSPHIntegrate::reset_cfl_timestep()
     local[0] = MAX(local[0], a2);
     if (!cfl_sound_reference) local[1] = MAX(local[1], -state[i][RHO]);
   }
-  double global[2];
-  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
-  if (global[0] < 0.0) return;    // no granular particles anywhere
-  const double rho = GRANSPH::cfl_density(-global[1], rho_init, cfl_sound_reference);
-  set_timestep(GRANSPH::cfl_timestep(cfl, smoothing_length(), sqrt(global[0]) * force->ftm2v,
-                                     GRANSPH::sound_speed(material.E, rho)));
 }
 
 // as fix dt/reset does

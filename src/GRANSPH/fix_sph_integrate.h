@@ -111,7 +111,10 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   void check_finite() const;
   void stop_if_atoms_lost() const;
   void check_plane() const;
-  virtual void reset_cfl_timestep();
+  void reset_cfl_timestep();
+  // eq. 19's maxima over this rank's grains into local: max |a|^2 (left negative without
+  // grains) and, with cfl/sound local, minus their lowest density
+  virtual void cfl_maxima(double *local);
   void set_timestep(double dt);
 
  private:

@@ -16,8 +16,6 @@
 #include "pair.h"
 #include "update.h"
 
-#include <cfloat>
-
 using namespace LAMMPS_NS;
 using FSI = FixSPHIntegrate;
 
@@ -224,11 +222,10 @@ int FixSPHModelKokkos<DeviceType, Model>::step_on_device(GRANSPH::Stage stage)
   return bad;    // local: the rank that has one stops the run (error->one), no collective
 }
 
-// eq. 19 with both maxima reduced on the device
+// both maxima reduced on the device
 template <class DeviceType, class Model>
-void FixSPHModelKokkos<DeviceType, Model>::reset_cfl_timestep()
+void FixSPHModelKokkos<DeviceType, Model>::cfl_maxima(double *local)
 {
-  if (this->cfl == 0.0) return;
   k_state.template sync<DeviceType>();
   auto f = this->atomKK->k_f.template view<DeviceType>();
   auto mask = this->atomKK->k_mask.template view<DeviceType>();
@@ -238,11 +235,6 @@ void FixSPHModelKokkos<DeviceType, Model>::reset_cfl_timestep()
   auto state = k_state.template view<DeviceType>();
   const int groupbit = this->groupbit;
   const int use_rmass = this->atom->rmass != nullptr;
-  const double E = this->material.E;
-  const double rho_ref = this->rho_init;
-  const bool reference = this->cfl_sound_reference;
-  // max |a|^2 (negative without grains) and, local, minus the grains' lowest density
-  double local[2] = {-1.0, -DBL_MAX};
   Kokkos::parallel_reduce(
       Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
       LAMMPS_LAMBDA(const int i, double &amax2) {
@@ -252,20 +244,13 @@ void FixSPHModelKokkos<DeviceType, Model>::reset_cfl_timestep()
         if (a2 > amax2) amax2 = a2;
       },
       Kokkos::Max<double>(local[0]));
-  if (!reference)    // a parallel region of its own, needed by local only
+  if (!this->cfl_sound_reference)    // a parallel region of its own, needed by local only
     Kokkos::parallel_reduce(
         Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
         LAMMPS_LAMBDA(const int i, double &most) {
           if ((mask(i) & groupbit) && -state(i, FSI::RHO) > most) most = -state(i, FSI::RHO);
         },
         Kokkos::Max<double>(local[1]));
-  double global[2];
-  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, this->world);
-  if (global[0] < 0.0) return;    // no granular particles anywhere
-  const double rho = GRANSPH::cfl_density(-global[1], rho_ref, reference);
-  this->set_timestep(GRANSPH::cfl_timestep(this->cfl, this->smoothing_length(),
-                                           sqrt(global[0]) * this->force->ftm2v,
-                                           GRANSPH::sound_speed(E, rho)));
 }
 
 // The per-atom output is read on the host: bring it there on output steps only.

@@ -45,7 +45,7 @@ class FixSPHModelKokkos : public FixSPHModel<Model>, public KokkosBase, public S
   int step(int stage);
   int step_on_host(GRANSPH::Stage stage);
   int step_on_device(GRANSPH::Stage stage);
-  void reset_cfl_timestep() override;
+  void cfl_maxima(double *local) override;
 
  protected:
   using Arrays = FixSPHIntegrate::Arrays;
