@@ -53,14 +53,6 @@ template <class ForceView, class State, class VirialView> struct DummyForces {
     add_virial(sum, vatom, want_vatom, d, vir);
   }
 };
-
-template <class ForceView, class State, class VirialView>
-DummyForces<ForceView, State, VirialView>
-make_dummy_forces(const ForceView &f, const State &state, const VirialView &vatom, double ftm2v,
-                  bool want_virial, bool want_vatom, bool repeat)
-{
-  return {f, state, vatom, ftm2v, want_virial, want_vatom, repeat};
-}
 }    // namespace
 
 template <class DeviceType>
@@ -309,10 +301,11 @@ double PairSPHGranularKokkos<DeviceType>::pack_particles(int from, int to, bool 
 // what adds the grains' forces to the dummy particles in this evaluation
 template <class DeviceType> auto PairSPHGranularKokkos<DeviceType>::dummy_forces()
 {
-  return make_dummy_forces(atomKK->k_f.template view<DeviceType>(),
-                           state_kk->template state_on<DeviceType>(),
-                           k_vatom.template view<DeviceType>(), force->ftm2v, vflag_either != 0,
-                           vflag_atom != 0, repeats_last_wall_forces());
+  auto f = atomKK->k_f.template view<DeviceType>();
+  auto state = state_kk->template state_on<DeviceType>();
+  auto vatom = k_vatom.template view<DeviceType>();
+  return DummyForces<decltype(f), decltype(state), decltype(vatom)>{
+      f, state, vatom, force->ftm2v, vflag_either != 0, vflag_atom != 0, repeats_last_wall_forces()};
 }
 
 // as PairSPHGranular::walls
