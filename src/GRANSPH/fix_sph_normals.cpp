@@ -8,6 +8,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "group.h"
 #include "memory.h"
@@ -208,6 +209,23 @@ void FixSPHNormals::read_file(const char *path)
     error->all(FLERR, "Fix sph/normals: {} of the {} atom IDs in WallNormals of {} belong to no atom",
                nrows - found, nrows, path);
   if (comm->me == 0) utils::logmesg(lmp, "Fix sph/normals: {} wall normals from {}\n", nrows, path);
+  warn_if_periodic(path);
+}
+
+// A terrain in a box that is periodic across it continues on the other side (grains
+// that leave one end meet the terrain's other end): a warning, since a periodic terrain
+// (an infinite slope) is legitimate
+void FixSPHNormals::warn_if_periodic(const char *path) const
+{
+  std::string across;
+  for (int d = 0; d < domain->dimension; ++d)
+    if (domain->periodicity[d]) across += std::string(across.empty() ? "" : " and ") + "xyz"[d];
+  if (!across.empty() && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix sph/normals: the box is periodic in {}: the terrain of {} continues "
+                   "across that boundary; use boundary f (or s) there unless the terrain is "
+                   "itself periodic",
+                   across, path);
 }
 
 /* ----------------------------------------------------------------------

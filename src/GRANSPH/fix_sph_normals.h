@@ -54,6 +54,7 @@ class FixSPHNormals : public Fix {
 
   void read_file(const char *path);
   void set_group(const char *group_id, const double *n);
+  void warn_if_periodic(const char *path) const;
 };
 
 }    // namespace LAMMPS_NS

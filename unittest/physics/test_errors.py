@@ -135,7 +135,8 @@ NORMALS_FILES = {"nosection": "Atoms\n\n126 2 0 0 0\n",
                  "nonz": "WallNormals\n\n126 0 0 1\n127 0 0\n",
                  "word": "WallNormals\n\n126 0 zero 1\n",
                  "grain": "WallNormals\n\n1 0 0 1\n",
-                 "beyond": "WallNormals\n\n126 0 0 1\n999 0 0 1\n"}
+                 "beyond": "WallNormals\n\n126 0 0 1\n999 0 0 1\n",
+                 "floor": "WallNormals\n\n" + "".join(f"{i} 0 0 1\n" for i in range(126, 201))}
 for name, fields, expected in (
         ("an unknown keyword", "vector 0 0 1", r"unknown keyword vector \(valid: file, set\)"),
         ("set of no group", "set nosuch 0 0 1", r"group nosuch \(keyword set\) does not exist"),
@@ -256,6 +257,17 @@ with tempfile.TemporaryDirectory() as tmp:
     code, error = run_case(tmp, FINER_SAND, KOKKOS)
     check("a floor at twice the grains' spacing (/kk)", code != 0 and re.search(WALL_SPACING, error),
           error or "no error")
+    # a terrain's normals in a box periodic across it: a warning that names the direction
+    # (a periodic terrain is legitimate), none in the box of fixed boundaries
+    terrain = GOOD["fix"] + "\nfix normals floor sph/normals file " + os.path.join(tmp, "floor.normals")
+    for boundary, expected in (("p f f", "WARNING: Fix sph/normals: the box is periodic in x: the terrain of "),
+                               ("f f f", None)):
+        code, out = gransph_run.output_of(
+            tmp, BASE.format(**{**GOOD, "fix": terrain}).replace("boundary f f f", "boundary " + boundary))
+        warned = expected in out if expected else "WARNING: Fix sph/normals" not in out
+        check(f"a terrain in a box of boundary {boundary}: {'a' if expected else 'no'} warning",
+              code == 0 and warned and "75 wall normals from" in out,
+              next((l for l in out.splitlines() if "WARNING" in l or "ERROR" in l), "no warning"))
     # a batch job's log file holds the message too, from a one-rank error (error->one) of
     # GRANSPH's and of LAMMPS' own
     for name, text, expected in (
