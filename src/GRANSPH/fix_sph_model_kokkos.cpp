@@ -82,7 +82,7 @@ FixSPHModelKokkos<DeviceType, Model>::FixSPHModelKokkos(LAMMPS *lmp, int narg, c
   this->memory->destroy(this->rates);
   this->memory->destroy(this->start);
   grow_arrays(this->atom->nmax);
-  for (int i = 0; i < this->atom->nlocal; ++i) set_arrays(i);
+  for (int i = 0; i < this->atom->nlocal; ++i) this->set_arrays(i);
 }
 
 template <class DeviceType, class Model> FixSPHModelKokkos<DeviceType, Model>::~FixSPHModelKokkos()
