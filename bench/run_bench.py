@@ -137,7 +137,7 @@ def build_against(ref, arch):
         if archive.wait() != 0:
             sys.exit(f"git archive {sha} failed")
     configure = ["cmake", "-S", src, "-B", build, "-G", "Ninja", "-D", "BUILD_TESTING=OFF"]
-    if os.environ.get("GRANSPH_STACK") == "2026":    # inside tools/sid-root.sh's root
+    if os.environ.get("GRANSPH_STACK") == "2026":    # inside tools/stack/sid-root.sh's root
         configure += ["-D", "LAMMPS_SOURCE_DIR=/opt/lammps", "-D", "LAMMPS_BUILD_DIR=/opt/lammps/build"]
     if arch == "native":    # CMAKE_CXX_FLAGS for commits before GRANSPH_ARCH
         configure += ["-D", "CMAKE_CXX_FLAGS=-march=native -ffp-contract=off", "-D", "GRANSPH_ARCH=native"]

@@ -3,7 +3,7 @@
 # physics and MPI tests) with ctest, on both stacks:
 #   2021: LAMMPS 29Sep2021 + Kokkos 3.4 (OpenMP+Serial) on this machine, build/
 #   2026: sid's LAMMPS (4Jul2026 on) + Kokkos 5 (OpenMP) in the Debian sid root of
-#         tools/sid-root.sh, build-2026/; its lock (package versions, LAMMPS version
+#         tools/stack/sid-root.sh, build-2026/; its lock (package versions, LAMMPS version
 #         and tarball sha256) is printed first
 # GRANSPH_STACKS selects them (default "2021 2026"; e.g. GRANSPH_STACKS=2021).
 # Arguments go to ctest on each stack (e.g. -R Physics -j1).
@@ -26,17 +26,17 @@ step() { # step NAME CMD...: run CMD, note its wall time
 }
 
 stack_2021() {
-  step deps bash "$top/tools/deps.sh" &&
-    step plugin bash "$top/tools/build.sh" &&
+  step deps bash "$top/tools/stack/deps.sh" &&
+    step plugin bash "$top/tools/stack/build.sh" &&
     step tests ctest --test-dir "$top/build" --output-on-failure "$@"
 }
 
 stack_2026() {
-  step deps bash "$top/tools/sid-root.sh" &&
-    echo "=== the 2026 stack is made of (its lock, from tools/sid-root.sh lock):" &&
-    bash "$top/tools/sid-root.sh" lock &&
-    step plugin env GRANSPH_STACK=2026 bash "$top/tools/build.sh" &&
-    step tests bash "$top/tools/sid-root.sh" run bash -c 'cd /gransph/build-2026 &&
+  step deps bash "$top/tools/stack/sid-root.sh" &&
+    echo "=== the 2026 stack is made of (its lock, from tools/stack/sid-root.sh lock):" &&
+    bash "$top/tools/stack/sid-root.sh" lock &&
+    step plugin env GRANSPH_STACK=2026 bash "$top/tools/stack/build.sh" &&
+    step tests bash "$top/tools/stack/sid-root.sh" run bash -c 'cd /gransph/build-2026 &&
       CTEST_PARALLEL_LEVEL=$1 ctest --output-on-failure "${@:2}"' _ "$CTEST_PARALLEL_LEVEL" "$@"
 }
 

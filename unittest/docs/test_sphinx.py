@@ -6,7 +6,7 @@ argument), so that a :doc: reference is either one of our pages or a real page o
 LAMMPS manual.  Then the same build is shown to fail: on a copy of doc/ with a reference
 to a page that exists nowhere, and on one with a malformed directive.
 
-Sphinx comes from Debian's python3-sphinx and python3-myst-parser (tools/deps.sh installs
+Sphinx comes from Debian's python3-sphinx and python3-myst-parser (tools/stack/deps.sh installs
 them): where they are missing this test fails, it does not skip."""
 
 import os
@@ -47,7 +47,7 @@ def main():
         found = subprocess.run([PYTHON, "-c", f"import {module}"], capture_output=True)
         if found.returncode != 0:
             print(f"FAIL: {PYTHON} has no {module}: install Debian's {package} "
-                  "(bash tools/deps.sh does)")
+                  "(bash tools/stack/deps.sh does)")
             return 1
     failed = 0
     with tempfile.TemporaryDirectory() as tmp:

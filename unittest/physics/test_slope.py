@@ -38,7 +38,7 @@ mode a strip can hold. Seeded (--seed 1 --widths 4,8,16, 42 checks each):
   or tilted, below yield too (a layer of phi = 60 degrees breaks up the same way, and
   holds only because it stays below yield), while wall/stress paper (whose monolayer
   slides at 18 degrees) is neutral: validation/README.md, "The rough floor's thinnest
-  layer", and tools/wall-stability, which finds the growth from the equations alone and a
+  layer", and tools/research/wall-stability, which finds the growth from the equations alone and a
   design stable at rest (not yet sliding where the material does). Layers of 2 grow the
   same pattern but hold (32 columns); with a dilatancy angle of 5 degrees (a trial
   material, not kept) the seeded monolayer holds on 8 and 16 columns at both spacings

@@ -9,7 +9,7 @@ middle creeps down the slope at a few cm/s: as fast on either floor (within 10%;
 phase-change model's differ by 6%), and far below the 0.7 m/s of a frictionless slide
 over that time (0.21 s).
 
-Needs tools/terrain's GDAL reader (python3-gdal: tools/deps.sh, tools/sid-root.sh)."""
+Needs tools/terrain's GDAL reader (python3-gdal: tools/stack/deps.sh, tools/stack/sid-root.sh)."""
 
 import math
 import os

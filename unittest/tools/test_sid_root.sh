@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# tools/sid-root.sh when Debian sid moves: its decisions, run for real (--plan, and the
+# tools/stack/sid-root.sh when Debian sid moves: its decisions, run for real (--plan, and the
 # lock of a root in place) against fixture apt repositories and fixture roots. Needs no
 # network and builds nothing: apt-get/apt-cache read the fixtures, dpkg-query the roots'
 # status files. Every check must pass; there is nothing to skip.
 set -euo pipefail
-script=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)/tools/sid-root.sh
+script=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)/tools/stack/sid-root.sh
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 arch=$(dpkg --print-architecture)

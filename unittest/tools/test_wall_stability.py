@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""tools/wall-stability: the linear stability of a layer at rest on a dummy floor.
+"""tools/research/wall-stability: the linear stability of a layer at rest on a dummy floor.
 
 Checks the analysis that validation/README.md ("The rough floor's thinnest layer")
 rests on, for a monolayer on a 20-degree slope, 8 columns, dx 0.02:
@@ -17,7 +17,7 @@ import unittest
 
 TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 _loader = importlib.machinery.SourceFileLoader("wall_stability",
-                                               os.path.join(TOP, "tools", "wall-stability"))
+                                               os.path.join(TOP, "tools", "research", "wall-stability"))
 _spec = importlib.util.spec_from_loader("wall_stability", _loader)
 wall_stability = importlib.util.module_from_spec(_spec)
 _loader.exec_module(wall_stability)

@@ -1,4 +1,4 @@
-# Sourced by tools/deps.sh and tools/sid-root.sh: the Debian mirror this machine's
+# Sourced by tools/stack/deps.sh and tools/stack/sid-root.sh: the Debian mirror this machine's
 # own apt configuration uses, so that no registry host name is written in our code.
 #
 # debian_mirror_uri [SUITE]  prints the URI of the first `deb` entry for SUITE

@@ -26,9 +26,9 @@ APT_PACKAGES=(build-essential cmake ninja-build ccache dpkg-dev xz-utils
 
 log() { printf '[deps] %s\n' "$*"; }
 
-# shellcheck source=tools/apt-mirror.sh
+# shellcheck source=tools/stack/apt-mirror.sh
 source "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/apt-mirror.sh"
-# shellcheck source=tools/arch.sh
+# shellcheck source=tools/stack/arch.sh
 source "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/arch.sh"
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
@@ -91,7 +91,7 @@ build_kokkos() {
 
 # A second Kokkos 3.4.01 for CUDA (sm_80), only for the compile check in
 # unittest/cuda: there is no GPU here, but nvcc proves our device code compiles.
-# 3.4.01 predates CUDA 13, hence tools/patches/kokkos-3.4.01-cuda13.patch.
+# 3.4.01 predates CUDA 13, hence tools/stack/patches/kokkos-3.4.01-cuda13.patch.
 build_kokkos_cuda() {
   local nvcc; nvcc=$(PATH=$PATH:/usr/local/cuda/bin command -v nvcc) ||
     { log "nvcc not found (PATH, /usr/local/cuda/bin): skipping CUDA Kokkos and its compile check"; return 0; }

@@ -1,4 +1,4 @@
-# Sourced by tools/deps.sh and tools/sid-root.sh: the instruction set LAMMPS and the
+# Sourced by tools/stack/deps.sh and tools/stack/sid-root.sh: the instruction set LAMMPS and the
 # plugin are compiled for.
 #   GRANSPH_ARCH=native   (default) this machine's: AVX2, FMA, AVX-512 where the CPU has them
 #   GRANSPH_ARCH=generic  the compiler's default target (x86-64: SSE2), for a build that

@@ -3,13 +3,13 @@
 # in a Debian sid root, because Debian 12 cannot run the only Kokkos 5 we can get
 # (sid's binary libkokkos-dev needs glibc 2.38 and GCC 13's libstdc++).
 #
-#   tools/sid-root.sh [--refresh]   make the root and build LAMMPS in it; with both in
+#   tools/stack/sid-root.sh [--refresh]   make the root and build LAMMPS in it; with both in
 #                                   place it uses them as they are, needs no network and
 #                                   returns in seconds
-#   tools/sid-root.sh --plan [--refresh]
+#   tools/stack/sid-root.sh --plan [--refresh]
 #                                   say what that would do, and change nothing
-#   tools/sid-root.sh lock          write and print the lock file: what the stack is made of
-#   tools/sid-root.sh run CMD...    run CMD inside the root (as root, cwd /gransph),
+#   tools/stack/sid-root.sh lock          write and print the lock file: what the stack is made of
+#   tools/stack/sid-root.sh run CMD...    run CMD inside the root (as root, cwd /gransph),
 #                                   with this source tree mounted at /gransph
 #
 # Pinned is only what the port depends on: Kokkos major KOKKOS_MAJOR and LAMMPS from
@@ -45,7 +45,7 @@
 set -euo pipefail
 
 here=$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")
-top=$(dirname "$here")
+top=$(dirname "$(dirname "$here")")
 GRANSPH_DEPS=${GRANSPH_DEPS:-$HOME/.cache/gransph}
 SID=$GRANSPH_DEPS/sid
 ROOT=$SID/root
@@ -82,7 +82,7 @@ timed() { # timed LABEL CMD...: run CMD, append its wall time to times.log
 }
 
 [ "$(id -u)" -eq 0 ] || die "must run as root (mmdebstrap, chroot and unshare need it)"
-# shellcheck source=tools/arch.sh
+# shellcheck source=tools/stack/arch.sh
 source "$here/arch.sh"
 ARCH_CXX_FLAGS=$(gransph_arch_cxx_flags) || exit 1
 
@@ -118,7 +118,7 @@ sid_apt_opts() {
     -o Acquire::Languages=none -o APT::Sandbox::User=root -o APT::Architecture="$(dpkg --print-architecture)"
 }
 sid_mirror() {
-  # shellcheck source=tools/apt-mirror.sh
+  # shellcheck source=tools/stack/apt-mirror.sh
   source "$here/apt-mirror.sh"
   debian_mirror_uri bookworm
 }
@@ -201,7 +201,7 @@ check_kokkos() {
     die "$2 has Kokkos ${up%%-*} (libkokkos-dev $1), but src/GRANSPH/gransph_kokkos_compat.h" \
         "serves Kokkos $KOKKOS_MAJOR.x only. Keep a root with Kokkos $KOKKOS_MAJOR (a root in place" \
         "is remade only under GRANSPH_SID_REFRESH), or port the compatibility layer to" \
-        "Kokkos ${up%%.*} and set KOKKOS_MAJOR in tools/sid-root.sh."
+        "Kokkos ${up%%.*} and set KOKKOS_MAJOR in tools/stack/sid-root.sh."
 }
 # warnings about the root as it is: versions other than the tested ones
 check_root() {
@@ -210,7 +210,7 @@ check_root() {
   check_kokkos "$(sed -n 's/^libkokkos-dev=//p' <<< "$pkgs")" "the root"
   diff=$(untested <<< "$pkgs")
   [ -z "$diff" ] || warn "the root's packages differ from those last tested (SID_TESTED" \
-    "in tools/sid-root.sh): $diff. A failure may come from them."
+    "in tools/stack/sid-root.sh): $diff. A failure may come from them."
 }
 
 # --- LAMMPS versions
@@ -307,7 +307,7 @@ check_sid_packages() {
   check_kokkos "$(sed -n 's/^libkokkos-dev=//p' <<< "$cands")" "sid"
   diff=$(untested < <(sid_candidates "${SID_TESTED[@]%%=*}"))
   [ -z "$diff" ] || warn "sid's packages differ from those last tested (SID_TESTED in" \
-    "tools/sid-root.sh): $diff. Using sid's; a failure may come from them."
+    "tools/stack/sid-root.sh): $diff. Using sid's; a failure may come from them."
   log "sid's packages for the root: $(tr '\n' ' ' <<< "$cands")"
 }
 
@@ -416,7 +416,7 @@ unpack_lammps() {
 # KOKKOS (the /kk styles; OpenMP, Debian's Kokkos), PLUGIN (loads us), SPH (the
 # sph/taitwater peer in bench/), GRANULAR, MOLECULE (the fix harness needs it), RIGID
 # (bodies of dummy particles moved by the sand);
-# the instruction set of tools/arch.sh (GRANSPH_ARCH).
+# the instruction set of tools/stack/arch.sh (GRANSPH_ARCH).
 # LAMMPS since 2025 always has exceptions (no LAMMPS_EXCEPTIONS option any more).
 lammps_cmake_args() {
   echo -G Ninja -D CMAKE_BUILD_TYPE=Release -D CMAKE_CXX_COMPILER_LAUNCHER=ccache \
@@ -452,7 +452,7 @@ write_lock() {
   [ -n "$src" ] && note=$(lammps_newer_note "$L_DEB")
   printf '%s\n' "$all" > "$SID/root.packages"
   {
-    echo "# the 2026 stack in $ROOT, as tools/sid-root.sh made it: compare with the lock of"
+    echo "# the 2026 stack in $ROOT, as tools/stack/sid-root.sh made it: compare with the lock of"
     echo "# a run that passed to see what changed"
     echo "root.made=$(date -u -r "$ROOT/.gransph-root" +%FT%TZ)"
     echo "root.packages=$(wc -l <<< "$all") packages, sha256 $(sha256sum <<< "$all" | cut -c1-16) ($SID/root.packages)"
@@ -475,7 +475,7 @@ usage() { sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d; s/^# \{0,1\}//'
 
 if [ "${1:-}" = run ]; then
   shift
-  root_in_place || die "no sid root in $ROOT yet: run tools/sid-root.sh first"
+  root_in_place || die "no sid root in $ROOT yet: run tools/stack/sid-root.sh first"
   sid_run "$@"
   exit
 fi
@@ -487,7 +487,7 @@ for arg in "$@"; do
     --plan) PLAN=1 ;;
     --refresh) REFRESH=1 ;;
     lock)
-      root_in_place || die "no sid root in $ROOT yet: run tools/sid-root.sh first"
+      root_in_place || die "no sid root in $ROOT yet: run tools/stack/sid-root.sh first"
       write_lock && cat "$LOCK"; exit ;;
     -h|--help) usage ;;
     *) usage 1 >&2 ;;
@@ -499,7 +499,7 @@ mkdir -p "$SID"
 # decides once it has finished
 if [ "$PLAN" = 0 ]; then
   exec 9> "$SID/.making"
-  flock -n 9 || { log "another tools/sid-root.sh is making the stack: waiting for it"; flock 9; }
+  flock -n 9 || { log "another tools/stack/sid-root.sh is making the stack: waiting for it"; flock 9; }
 fi
 decide_root
 [ "$ROOT_ACTION" = keep ] && check_root
