@@ -76,7 +76,7 @@ check("one thermo table per run, one reading per run", len(blocks) == runs and l
       f"{len(blocks)} tables, {len(data['step'])} readings, {runs} runs")
 ends = {int(b["Step"][-1]): b for b in blocks}
 check("the readings are at the runs' last steps", sorted(ends) == list(data["step"]),
-      f"steps {list(data['step'][:3])} ... {data['step'][-1]}")
+      f"steps {[int(s) for s in data['step'][:3]]} ... {int(data['step'][-1])}")
 
 # the global vectors, at the end of every run; the force's components against its size
 pairs = []
