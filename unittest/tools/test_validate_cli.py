@@ -1,7 +1,7 @@
 """tools/research/validate's command line: each study a subcommand, and the command lines
 of before the subcommands (the mode flags --quick, --convergence, --cfl C ..., which the
 reports of validation/ record) read as the same subcommand with the same options. Runs
-nothing: only the parsed options are compared. (ctest runs it with tools/python on
+nothing: only the parsed options are compared. (ctest runs it with tools/lib on
 PYTHONPATH, as the launcher tools/research/validate does.)"""
 
 import sys

@@ -3,7 +3,7 @@ study and the GPU check take from a run (measures), the bench's cases (bench), t
 validation studies (validate) and the GPU check (gpu_check).
 
 The commands are tools/research/validate, tools/gpu/gpu-check and bench/run_bench.py;
-each runs its module here (`python3 -m gransph.validate ...` with tools/python on
+each runs its module here (`python3 -m gransph.validate ...` with tools/lib on
 PYTHONPATH does the same).
 """
 
