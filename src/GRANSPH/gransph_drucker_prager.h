@@ -15,7 +15,7 @@
      the floor at 1 m/s, dx = 0.01 m: 2 G gamma_dot dt = 10 kPa against 0.1 kPa), and a
      dilating step (tr d > 0) then makes the explicit plastic correction overshoot into
      the cone: a thin sliding layer holds a fraction of its strength
-     (validation/basal_friction.md).
+     (validation/basal_friction/basal_friction.md).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_DRUCKER_PRAGER_H

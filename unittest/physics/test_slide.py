@@ -3,7 +3,7 @@ sliding at 1 m/s, decelerates at mu g with the friction coefficient of Drucker-P
 plane-strain matching (3 alpha_phi = 0.569 for phi = 37 deg, 0.411 for a second material
 at 25 deg) within 5%, at dx = 0.02 and 0.01 m, and keeps its height within 0.05 dx.
 With the paper's explicit plastic step (plastic paper) the single layer decelerates at
-0.45 g at dx = 0.01 (validation/basal_friction.md has the study over speeds and
+0.45 g at dx = 0.01 (validation/basal_friction/basal_friction.md has the study over speeds and
 spacings; the fastest, finest thin layers still fall short)."""
 
 import math

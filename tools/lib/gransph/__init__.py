@@ -1,0 +1,12 @@
+"""GRANSPH's research tools in Python: the shared LAMMPS runner (lammps), the measures a
+study and the GPU check take from a run (measures), the bench's cases (bench), the
+validation studies (validate) and the GPU check (gpu_check).
+
+The commands are tools/research/validate, tools/gpu/gpu-check and bench/run_bench.py;
+each runs its module here (`python3 -m gransph.validate ...` with tools/lib on
+PYTHONPATH does the same).
+"""
+
+import os
+
+TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
