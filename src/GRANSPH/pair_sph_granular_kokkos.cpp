@@ -363,7 +363,7 @@ void PairSPHGranularKokkos<DeviceType>::wall_forces(const DeviceParticles<Device
 
 // as PairSPHGranular::pack_particles_single
 template <class DeviceType>
-Kokkos::View<GRANSPH::PairParticleSingle *, DeviceType>
+Kokkos::View<const GRANSPH::PairParticleSingle *, DeviceType>
 PairSPHGranularKokkos<DeviceType>::pack_particles_single(int n)
 {
   if ((int) d_particles_single.extent(0) < n)

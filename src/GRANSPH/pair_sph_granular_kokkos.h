@@ -39,7 +39,7 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   void check_no_coincident(const DeviceParticles<DeviceType> &p);
   void check_wall_spacing();
   double pack_particles(int from, int to, bool since_pruned = false);
-  Kokkos::View<GRANSPH::PairParticleSingle *, DeviceType> pack_particles_single(int n);
+  Kokkos::View<const GRANSPH::PairParticleSingle *, DeviceType> pack_particles_single(int n);
   void walls(const DeviceParticles<DeviceType> &p, bool with_forces);
   void wall_forces(const DeviceParticles<DeviceType> &p);
   // Particles: DeviceParticles<DeviceType> or, under precision mixed, over PairParticleSingle
