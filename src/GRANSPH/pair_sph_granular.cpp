@@ -476,15 +476,18 @@ void PairSPHGranular::forward_comm_friction_slide()
 int PairSPHGranular::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
                                        int * /*pbc*/)
 {
+  const double *values = slide_on_host();
   for (int k = 0; k < n; ++k)
-    for (int c = 0; c < SLIDE; ++c) buf[SLIDE * k + c] = slide[SLIDE * list[k] + c];
+    for (int c = 0; c < SLIDE; ++c) buf[SLIDE * k + c] = values[SLIDE * list[k] + c];
   return SLIDE * n;
 }
 
 void PairSPHGranular::unpack_forward_comm(int n, int first, double *buf)
 {
+  double *values = slide_on_host();
   for (int k = 0; k < n; ++k)
-    for (int c = 0; c < SLIDE; ++c) slide[SLIDE * (first + k) + c] = buf[SLIDE * k + c];
+    for (int c = 0; c < SLIDE; ++c) values[SLIDE * (first + k) + c] = buf[SLIDE * k + c];
+  slide_changed_on_host();
 }
 
 // The wall normals of atoms [0, n), 3 per atom into `out`: a dummy particle's own (fix
