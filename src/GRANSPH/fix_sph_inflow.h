@@ -28,6 +28,11 @@ class FixSPHInflow : public Fix {
   void write_restart(FILE *) override;
   void restart(char *) override;
 
+ protected:
+  bool layer_due(double t) const;
+  // every layer due by t_place (the Kokkos twin: with the atoms on the host)
+  virtual void insert_due_layers(double t_place);
+
  private:
   int ntype;
   double center[3], normal[3], e1[3], e2[3];    // nozzle disk and its lattice axes
@@ -48,8 +53,6 @@ class FixSPHInflow : public Fix {
   void parse_keywords(int, int, char **);
   void build_lattice();
   double emission_time(bigint k) const;
-  bool layer_due(double t) const;
-  void insert_due_layers(double t_place);
   int insert_layer(double t_emit, double t_place);
   bool owns(double *x, imageint &image) const;
 };

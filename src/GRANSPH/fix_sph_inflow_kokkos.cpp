@@ -19,16 +19,11 @@ FixSPHInflowKokkos::FixSPHInflowKokkos(LAMMPS *lmp, int narg, char **arg) :
   datamask_modify = EMPTY_MASK;
 }
 
-void FixSPHInflowKokkos::setup_pre_exchange()
+// all atom data on the host where a layer enters, none on the other steps
+void FixSPHInflowKokkos::insert_due_layers(double t_place)
 {
+  if (!layer_due(t_place)) return;
   atomKK->sync(Host, ALL_MASK);
-  FixSPHInflow::setup_pre_exchange();
-  atomKK->modified(Host, ALL_MASK);
-}
-
-void FixSPHInflowKokkos::pre_exchange()
-{
-  atomKK->sync(Host, ALL_MASK);
-  FixSPHInflow::pre_exchange();
+  FixSPHInflow::insert_due_layers(t_place);
   atomKK->modified(Host, ALL_MASK);
 }

@@ -16,8 +16,9 @@ namespace LAMMPS_NS {
 class FixSPHInflowKokkos : public FixSPHInflow {
  public:
   FixSPHInflowKokkos(class LAMMPS *, int, char **);
-  void setup_pre_exchange() override;
-  void pre_exchange() override;
+
+ protected:
+  void insert_due_layers(double t_place) override;
 };
 
 }    // namespace LAMMPS_NS

@@ -80,6 +80,14 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   rho_init = material.rho0;
 
   int iarg = 5;
+  // keyword iarg's value, one of two: 0 for the first, 1 for the second
+  auto either = [&](const char *first, const char *second) {
+    const std::string value = arg[iarg + 1];
+    if (value != first && value != second)
+      error->all(FLERR, "{}: {} must be {} or {}, not {}", style_name, arg[iarg], first, second,
+                 value);
+    return value == second ? 1 : 0;
+  };
   while (iarg < narg) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", style_name, key);
@@ -100,30 +108,19 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
         if (cfl <= 0.0 || cfl > 1.0) error->all(FLERR, "{}: cfl must be in (0, 1] or none", style_name);
       }
     } else if (key == "cfl/sound") {
-      const std::string value = arg[iarg + 1];
-      if (value != "local" && value != "reference")
-        error->all(FLERR, "{}: cfl/sound must be local or reference, not {}", style_name, value);
-      cfl_sound_reference = value == "reference";
+      cfl_sound_reference = either("local", "reference");
     } else if (key == "predictor") {
-      const std::string value = arg[iarg + 1];
-      if (value != "midpoint" && value != "extrapolated")
-        error->all(FLERR, "{}: predictor must be midpoint or extrapolated, not {}", style_name,
-                   value);
-      predictor_extrapolated = value == "extrapolated";
+      predictor_extrapolated = either("midpoint", "extrapolated");
       nrates = predictor_extrapolated ? NRATES : RATES_DT;
     } else if (key == "matching" || key == "plastic") {
       if (!utils::strmatch(style, "^sph/elastoplastic"))
         error->all(FLERR, "{}: keyword {} is for fix sph/elastoplastic only", style_name, key);
-      const std::string value = arg[iarg + 1];
-      if (key == "matching" && (value == "plane_strain" || value == "simple_shear"))
-        material.dp_matching =
-            value == "plane_strain" ? GranSPHMaterial::PLANE_STRAIN : GranSPHMaterial::SIMPLE_SHEAR;
-      else if (key == "plastic" && (value == "return" || value == "paper"))
-        material.dp_plastic =
-            value == "return" ? GranSPHMaterial::RETURN_MAPPING : GranSPHMaterial::EXPLICIT_RATE;
+      if (key == "matching")
+        material.dp_matching = either("plane_strain", "simple_shear") ? GranSPHMaterial::SIMPLE_SHEAR
+                                                                     : GranSPHMaterial::PLANE_STRAIN;
       else
-        error->all(FLERR, "{}: {} must be {}", style_name, key,
-                   key == "matching" ? "plane_strain or simple_shear" : "return or paper");
+        material.dp_plastic = either("return", "paper") ? GranSPHMaterial::EXPLICIT_RATE
+                                                        : GranSPHMaterial::RETURN_MAPPING;
     } else if (key == "geostatic") {
       geostatic_flag = 1;
       surface_height = utils::numeric(FLERR, arg[iarg + 1], false, lmp);

@@ -123,6 +123,14 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
     return bad;
   }
 
+  // the step of every grain, at once (the Kokkos twin: where its atoms are); the number of
+  // grains with a bad new state (the corrector)
+  virtual int step(Stage stage)
+  {
+    return step_grains(stage, atom->x, atom->v, atom->f,
+                       [](const auto &advance) { return advance(0, advance.n); });
+  }
+
  private:
   // the owned atoms of the group and their masses, for the step's loop
   std::vector<int> grains;
@@ -139,13 +147,6 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
         grains.push_back(i);
         grain_mass.push_back(atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]]);
       }
-  }
-
-  // the number of grains with a bad new state (the corrector)
-  int step(Stage stage)
-  {
-    return step_grains(stage, atom->x, atom->v, atom->f,
-                       [](const auto &advance) { return advance(0, advance.n); });
   }
 };
 

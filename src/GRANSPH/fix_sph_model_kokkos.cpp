@@ -123,12 +123,6 @@ template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Mode
 /* ---------------------------------------------------------------------- */
 
 template <class DeviceType, class Model>
-void FixSPHModelKokkos<DeviceType, Model>::initial_integrate(int)
-{
-  step(GRANSPH::PREDICT);
-}
-
-template <class DeviceType, class Model>
 void FixSPHModelKokkos<DeviceType, Model>::final_integrate()
 {
   if (step(GRANSPH::CORRECT)) {
@@ -139,11 +133,10 @@ void FixSPHModelKokkos<DeviceType, Model>::final_integrate()
   }
 }
 
-// the predictor or corrector step; the number of grains with a bad new state (corrector)
-template <class DeviceType, class Model> int FixSPHModelKokkos<DeviceType, Model>::step(int stage)
+template <class DeviceType, class Model>
+int FixSPHModelKokkos<DeviceType, Model>::step(GRANSPH::Stage stage)
 {
-  const auto s = static_cast<GRANSPH::Stage>(stage);
-  return this->execution_space == Host ? step_on_host(s) : step_on_device(s);
+  return this->execution_space == Host ? step_on_host(stage) : step_on_device(stage);
 }
 
 // On the host, the plain fix's loop over the grains (the same arithmetic, vectorised) in

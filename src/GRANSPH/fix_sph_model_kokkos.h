@@ -28,7 +28,6 @@ class FixSPHModelKokkos : public FixSPHModel<Model>, public KokkosBase, public S
   void init() override;
   void setup_pre_force(int) override;
   void setup(int) override;
-  void initial_integrate(int) override;
   void final_integrate() override;
   void end_of_step() override;
   void post_run() override;
@@ -42,7 +41,7 @@ class FixSPHModelKokkos : public FixSPHModel<Model>, public KokkosBase, public S
   void unpack_forward_comm_device(int, int, GRANSPHCompat::tdual_comm_buffer &);
 
   // device kernels (public: CUDA lambdas may not live in private members)
-  int step(int stage);
+  int step(GRANSPH::Stage stage) override;
   int step_on_host(GRANSPH::Stage stage);
   int step_on_device(GRANSPH::Stage stage);
   void cfl_maxima(double *local) override;

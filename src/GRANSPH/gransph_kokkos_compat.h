@@ -258,26 +258,21 @@ namespace GRANSPHCompat {
   }
 #define GRANSPH_KOKKOS_PAIR_FORWARD_COMM GRANSPH_KOKKOS_FIX_FORWARD_COMM
 #else
+// 29Sep2021 names a pair's hooks and a fix's apart
+#define GRANSPH_KOKKOS_FORWARD_COMM_AS(pack, unpack)                                            \
+  int pack(int n, DAT::tdual_int_2d k_sendlist, int iswap, DAT::tdual_xfloat_1d &k_buf, int,  \
+           int *) override                                                                     \
+  {                                                                                            \
+    return pack_forward_comm_device(n, {k_sendlist.template view<DeviceType>(), iswap}, k_buf); \
+  }                                                                                            \
+  void unpack(int n, int first, DAT::tdual_xfloat_1d &k_buf) override                         \
+  {                                                                                            \
+    unpack_forward_comm_device(n, first, k_buf);                                               \
+  }
 #define GRANSPH_KOKKOS_PAIR_FORWARD_COMM                                                        \
-  int pack_forward_comm_kokkos(int n, DAT::tdual_int_2d k_sendlist, int iswap,                \
-                               DAT::tdual_xfloat_1d &k_buf, int, int *) override               \
-  {                                                                                            \
-    return pack_forward_comm_device(n, {k_sendlist.template view<DeviceType>(), iswap}, k_buf); \
-  }                                                                                            \
-  void unpack_forward_comm_kokkos(int n, int first, DAT::tdual_xfloat_1d &k_buf) override     \
-  {                                                                                            \
-    unpack_forward_comm_device(n, first, k_buf);                                               \
-  }
+  GRANSPH_KOKKOS_FORWARD_COMM_AS(pack_forward_comm_kokkos, unpack_forward_comm_kokkos)
 #define GRANSPH_KOKKOS_FIX_FORWARD_COMM                                                         \
-  int pack_forward_comm_fix_kokkos(int n, DAT::tdual_int_2d k_sendlist, int iswap,            \
-                                   DAT::tdual_xfloat_1d &k_buf, int, int *) override           \
-  {                                                                                            \
-    return pack_forward_comm_device(n, {k_sendlist.template view<DeviceType>(), iswap}, k_buf); \
-  }                                                                                            \
-  void unpack_forward_comm_fix_kokkos(int n, int first, DAT::tdual_xfloat_1d &k_buf) override \
-  {                                                                                            \
-    unpack_forward_comm_device(n, first, k_buf);                                               \
-  }
+  GRANSPH_KOKKOS_FORWARD_COMM_AS(pack_forward_comm_fix_kokkos, unpack_forward_comm_fix_kokkos)
 #endif
 
 #endif

@@ -4,18 +4,71 @@
    kernels: the particle's pair data, a dummy particle's stress (eq. 8) and the
    grains' force on it (eq. 9), a grain's rates (eqs. 6, 7, 34, 35).
 
-   `Particles` is an accessor of gransph_neighbour_sums.h, `State` a
-   GRANSPH::StateAccess (gransph_state.h), `Forces` LAMMPS' forces callable as
-   f(i, a).
+   `Particles` is an accessor of gransph_neighbour_sums.h (both twins make a
+   ParticlesOf), `State` a GRANSPH::StateAccess (gransph_state.h), `Forces`
+   LAMMPS' forces callable as f(i, a).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_PAIR_PASSES_H
 #define LMP_GRANSPH_PAIR_PASSES_H
 
 #include "gransph_neighbour_sums.h"
+#include "gransph_pair_settings.h"
 #include "gransph_state.h"
 
 namespace GRANSPH {
+
+// element i of a per-atom array: a pointer's (the plain style) or a Kokkos view's
+template <class T> KOKKOS_INLINE_FUNCTION T &element(T *a, int i)
+{
+  return a[i];
+}
+template <class View>
+KOKKOS_INLINE_FUNCTION auto element(const View &a, int i) -> decltype(a(i))
+{
+  return a(i);
+}
+
+// The accessor of the neighbour sums (gransph_neighbour_sums.h) that both twins make: the
+// settings; the atoms as Atoms holds them, with row(i) particle i's row of neighbours and
+// the per-atom arrays numneigh, mask, normals, friction_mu and friction_slide (pointers or
+// views) beside the role bits granularbit and wallbit; and the particles' records, of
+// Particle: PairParticle, or PairParticleSingle for the grains' sums under `precision
+// mixed`.
+template <class Atoms, class Particle, class Records> struct ParticlesOf : SumOptions, Atoms {
+  using Real = decltype(Particle::rho);
+  Records particles;
+
+  ParticlesOf(const SumOptions &options, const Atoms &atoms, const Records &particles) :
+      SumOptions(options), Atoms(atoms), particles(particles)
+  {
+  }
+
+  KOKKOS_INLINE_FUNCTION int num_neighbours(int i) const { return element(this->numneigh, i); }
+  KOKKOS_INLINE_FUNCTION auto neighbours(int i) const { return this->row(i); }
+  KOKKOS_INLINE_FUNCTION const Particle &particle(int i) const { return element(particles, i); }
+  KOKKOS_INLINE_FUNCTION bool granular(int i) const
+  {
+    return element(this->mask, i) & this->granularbit;
+  }
+  KOKKOS_INLINE_FUNCTION bool wall(int i) const { return element(this->mask, i) & this->wallbit; }
+  KOKKOS_INLINE_FUNCTION double normal(int i, int a) const
+  {
+    return element(this->normals, 3 * i + a);
+  }
+  KOKKOS_INLINE_FUNCTION double friction(int i) const { return element(this->friction_mu, i); }
+  KOKKOS_INLINE_FUNCTION double slide(int i, int k) const
+  {
+    return element(this->friction_slide, SLIDE_VALUES * i + k);
+  }
+
+  // the same atoms and settings over `single`, the particles in single precision
+  template <class Single>
+  ParticlesOf<Atoms, PairParticleSingle, Single> in_single(const Single &single) const
+  {
+    return {*this, *this, single};
+  }
+};
 
 // The pair data of an atom: a grain's or a dummy particle's (sph), or, for an atom that is
 // neither, a massless one (the neighbour sums read it, and add nothing from it)

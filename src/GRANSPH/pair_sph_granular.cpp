@@ -52,43 +52,16 @@ struct HostAtoms {
   int granularbit, wallbit;
   const double *normals;    // 3 per atom, with wall_normal or wall_friction
   const double *friction_mu, *friction_slide;    // 1 and 4 per atom, with wall_friction
-};
-
-// Host accessor for the shared neighbour sums, over the particles as Particle holds them
-// (PairParticle, or PairParticleSingle for the grains' sums under `precision mixed`).
-template <class Particle> struct HostParticlesOf : GRANSPH::SumOptions, HostAtoms {
-  using Real = decltype(Particle::rho);
-  const Particle *particles;
-
-  HostParticlesOf(const GRANSPH::SumOptions &options, const HostAtoms &atoms,
-                  const Particle *particles) :
-      GRANSPH::SumOptions(options), HostAtoms(atoms), particles(particles)
-  {
-  }
 
   struct NeighbourRow {
     const int *row;
     int operator()(int k) const { return row[k] & NEIGHMASK; }
   };
-
-  int num_neighbours(int i) const { return numneigh[i]; }
-  NeighbourRow neighbours(int i) const { return {firstneigh[i]}; }
-  const Particle &particle(int i) const { return particles[i]; }
-
-  bool granular(int i) const { return mask[i] & granularbit; }
-  bool wall(int i) const { return mask[i] & wallbit; }
-  double normal(int i, int a) const { return normals[3 * i + a]; }
-  double friction(int i) const { return friction_mu[i]; }
-  double slide(int i, int k) const { return friction_slide[SLIDE * i + k]; }
-
-  // the same atoms and settings over `single`, the particles in single precision
-  HostParticlesOf<GRANSPH::PairParticleSingle>
-  in_single(const GRANSPH::PairParticleSingle *single) const
-  {
-    return {*this, *this, single};
-  }
+  NeighbourRow row(int i) const { return {firstneigh[i]}; }
 };
-using HostParticles = HostParticlesOf<PairParticle>;
+
+// the host accessor for the shared neighbour sums (GRANSPH::ParticlesOf)
+using HostParticles = GRANSPH::ParticlesOf<HostAtoms, PairParticle, const PairParticle *>;
 
 }    // namespace
 
@@ -503,15 +476,18 @@ void PairSPHGranular::forward_comm_friction_slide()
 int PairSPHGranular::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
                                        int * /*pbc*/)
 {
+  const double *values = slide_on_host();
   for (int k = 0; k < n; ++k)
-    for (int c = 0; c < SLIDE; ++c) buf[SLIDE * k + c] = slide[SLIDE * list[k] + c];
+    for (int c = 0; c < SLIDE; ++c) buf[SLIDE * k + c] = values[SLIDE * list[k] + c];
   return SLIDE * n;
 }
 
 void PairSPHGranular::unpack_forward_comm(int n, int first, double *buf)
 {
+  double *values = slide_on_host();
   for (int k = 0; k < n; ++k)
-    for (int c = 0; c < SLIDE; ++c) slide[SLIDE * (first + k) + c] = buf[SLIDE * k + c];
+    for (int c = 0; c < SLIDE; ++c) values[SLIDE * (first + k) + c] = buf[SLIDE * k + c];
+  slide_changed_on_host();
 }
 
 // The wall normals of atoms [0, n), 3 per atom into `out`: a dummy particle's own (fix

@@ -82,6 +82,10 @@ class PairSPHGranular : public Pair {
   // at the setup of a run that continues the last: the dummies take the last step's force
   bool repeats_last_wall_forces() const;
   void forward_comm_friction_slide();
+  // the slide values where the classic forward communication packs and unpacks them: on
+  // the host (the Kokkos twin brings them there, and marks them changed there after)
+  virtual double *slide_on_host() { return slide; }
+  virtual void slide_changed_on_host() {}
   double single_precision_origin(double *origin) const;
   void warn_if_far_from_single_origin();
   // the viscous-pressure diagnostic: the computes that report it, and the step of the

@@ -207,27 +207,6 @@ int PairSPHGranularKokkos<DeviceType>::update_wall_normals(int nall, bool limite
 }
 
 template <class DeviceType>
-int PairSPHGranularKokkos<DeviceType>::pack_forward_comm(int n, int *list, double *buf,
-                                                         int /*pbc_flag*/, int * /*pbc*/)
-{
-  k_slide.sync_host();
-  auto slide = k_slide.view_host();
-  for (int k = 0; k < n; ++k)
-    for (int c = 0; c < SLIDE; ++c) buf[SLIDE * k + c] = slide(SLIDE * list[k] + c);
-  return SLIDE * n;
-}
-
-template <class DeviceType>
-void PairSPHGranularKokkos<DeviceType>::unpack_forward_comm(int n, int first, double *buf)
-{
-  k_slide.sync_host();
-  auto slide = k_slide.view_host();
-  for (int k = 0; k < n; ++k)
-    for (int c = 0; c < SLIDE; ++c) slide(SLIDE * (first + k) + c) = buf[SLIDE * k + c];
-  k_slide.modify_host();
-}
-
-template <class DeviceType>
 int PairSPHGranularKokkos<DeviceType>::pack_forward_comm_device(
     int n, const typename GRANSPHCompat::KokkosTypes<DeviceType>::SendList &sendlist,
     GRANSPHCompat::tdual_comm_buffer &k_buf)
@@ -363,7 +342,7 @@ void PairSPHGranularKokkos<DeviceType>::wall_forces(const DeviceParticles<Device
 
 // as PairSPHGranular::pack_particles_single
 template <class DeviceType>
-Kokkos::View<GRANSPH::PairParticleSingle *, DeviceType>
+Kokkos::View<const GRANSPH::PairParticleSingle *, DeviceType>
 PairSPHGranularKokkos<DeviceType>::pack_particles_single(int n)
 {
   if ((int) d_particles_single.extent(0) < n)

@@ -26,8 +26,12 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   const double *viscous_pressure() override;
   // how the grains slide on walls with a friction of their own, to the ghosts: on the
   // device, or through the host when comm/kokkos takes the classic path
-  int pack_forward_comm(int, int *, double *, int, int *) override;
-  void unpack_forward_comm(int, int, double *) override;
+  double *slide_on_host() override
+  {
+    k_slide.sync_host();
+    return k_slide.view_host().data();
+  }
+  void slide_changed_on_host() override { k_slide.modify_host(); }
   GRANSPH_KOKKOS_PAIR_FORWARD_COMM
   int pack_forward_comm_device(int,
                                const typename GRANSPHCompat::KokkosTypes<DeviceType>::SendList &,
@@ -39,7 +43,7 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   void check_no_coincident(const DeviceParticles<DeviceType> &p);
   void check_wall_spacing();
   double pack_particles(int from, int to, bool since_pruned = false);
-  Kokkos::View<GRANSPH::PairParticleSingle *, DeviceType> pack_particles_single(int n);
+  Kokkos::View<const GRANSPH::PairParticleSingle *, DeviceType> pack_particles_single(int n);
   void walls(const DeviceParticles<DeviceType> &p, bool with_forces);
   void wall_forces(const DeviceParticles<DeviceType> &p);
   // Particles: DeviceParticles<DeviceType> or, under precision mixed, over PairParticleSingle
