@@ -1,4 +1,10 @@
 /* ----------------------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    A study of loop shapes for the grains' sums (issue 21; bench/README.md,
    eleventh round), beside the plugin: granular_rates without options over
    each grain's pruned row in three shapes,

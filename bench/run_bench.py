@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """bench/run_bench.py: GRANSPH's throughput on this machine (`bench/run_bench.py --help`;
 the code is tools/lib/gransph/bench.py, which runs LAMMPS as tools/research/validate and
 tools/gpu/gpu-check do). This launcher runs it as `python3 -m gransph.bench` with

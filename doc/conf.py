@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 # Sphinx configuration of GRANSPH's pages, built as LAMMPS builds its manual
 # (doc/utils/sphinx-config/conf.py.in of LAMMPS): reStructuredText pages in LAMMPS'
 # format, math by MathJax, the LAMMPS lexer for input scripts.  References to LAMMPS'

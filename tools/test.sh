@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 # Build what is missing, then run every GRANSPH test (unit, force-style YAML,
 # physics and MPI tests) with ctest, on both stacks:
 #   2021: LAMMPS 29Sep2021 + Kokkos 3.4 (OpenMP+Serial) on this machine, build/

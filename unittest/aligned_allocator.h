@@ -1,3 +1,9 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
 // std::vector storage on 64-byte boundaries: C++14's operator new does not honour the
 // alignas(64) of PairParticle, and code built for AVX-512 may move such records with
 // aligned instructions.

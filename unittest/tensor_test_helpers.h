@@ -1,3 +1,9 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
 // Helpers shared by the unit tests of the stress updates.
 
 #ifndef GRANSPH_TENSOR_TEST_HELPERS_H

@@ -1,3 +1,9 @@
+/* ----------------------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
 // Unit tests of the Wendland C2 kernel (paper eq. 3) and the SPH sums built on it, the
 // sums through the neighbour loops of the pair styles (gransph_neighbour_sums.h).
 

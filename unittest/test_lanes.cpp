@@ -1,3 +1,9 @@
+/* ----------------------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
 // The host's lanes (gransph_lanes.h): granular_rates without options, four neighbours at a
 // time, against the generic loop of gransph_neighbour_sums.h on the same particles. Built
 // with the plugin's instruction set, only where it has the lanes (unittest/CMakeLists.txt).

@@ -1,3 +1,9 @@
+/* ----------------------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
 // Unit tests of the phase-change return map (Dunatunga & Kamrin 2015; Chen et al. 2019 eqs. 22-28).
 
 #include "gransph_drucker_prager.h"

@@ -1,3 +1,9 @@
+/* ----------------------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
 // Unit tests of the Jaumann rate and the Drucker-Prager stress update.
 
 #include "gransph_drucker_prager.h"

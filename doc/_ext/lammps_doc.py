@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """What GRANSPH's pages need of LAMMPS' manual when they are built on their own.
 
 LAMMPS builds its manual with Sphinx from doc/src, where every command has a page and

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 # The site of in.landslide, made by the input (shell ./make_site.sh DX): a chute whose bed
 # falls at 40 degrees (slope 0.84) to x = 0.6 m, bends into the level along a parabola
 # z = 1.05 (1 - x)^2 and is level from x = 1 m, with a channel 3 y^2 across it, as an

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Draw the landslide's deposit from landslide.dump (run in.landslide with -var dump 1):
 a side view (x, z) over the bed's centre line and a top view (x, y), the barrier marked,
 into deposit.png."""

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Draw the barrier's force histories of several runs of in.landslide (their
 landslide.force files, one per run, each copied aside) into barrier_force.png:
 

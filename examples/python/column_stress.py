@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """GRANSPH from Python: the README's sand column collapsing on a floor of dummy particles,
 run through the LAMMPS Python module, with the grains' stress, the force of the grains on
 the floor and the deposit's edge read into numpy by the module's own extract functions

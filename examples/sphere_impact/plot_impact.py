@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The ball's path and the bed at the end of a run (sphere_impact.png):
 
   plot_impact.py PATH.txt STATE.dump

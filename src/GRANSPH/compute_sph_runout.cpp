@@ -1,4 +1,10 @@
 /* ----------------------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANSPH: compute sph/runout.
 
    The grains' volume (m / rho0) is binned by distance r from a vertical axis in

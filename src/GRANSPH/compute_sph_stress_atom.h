@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: compute sph/stress/atom, the stress of each particle as a
    geomechanics user reads it: p, q, principal stresses, the major direction,
    Lode angle, the mobilised strength of the integrator's model, and the regime.

@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: Kokkos twin of compute sph/wallforce: the sum of the forces on the
    wall's dummy particles is reduced where the forces are, on the device.
 ------------------------------------------------------------------------- */

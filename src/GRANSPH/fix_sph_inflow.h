@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: fix sph/inflow, a granular nozzle: inserts layers of particles on a
    square lattice inside a disk, one layer each time the previous one has
    travelled a lattice spacing, optionally with the nozzle centre oscillating

@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: Kokkos twin of fix sph/inflow. Creating atoms is host work in
    LAMMPS 29Sep2021 (as for fix deposit), so the twin only tells Kokkos what it
    touches: nothing on ordinary steps, and all atom data on the host in the

@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: Kokkos twin of FixSPHModel<Model>: the per-atom SPH state lives in
    DualViews; predictor, corrector, stress update, CFL reduction and forward
    communication run on the device with the same per-particle functions as the

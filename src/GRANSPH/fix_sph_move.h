@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: fix sph/move, moves walls of dummy particles with a prescribed
    velocity, in step with the GRANSPH predictor-corrector at any timestep.
 ------------------------------------------------------------------------- */

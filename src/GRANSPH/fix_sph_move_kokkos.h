@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: Kokkos twin of fix sph/move. The velocity is evaluated on the
    host, as in the plain fix; the atoms move on the Kokkos device.
 ------------------------------------------------------------------------- */

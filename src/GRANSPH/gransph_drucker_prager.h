@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: elastic-perfectly plastic Drucker-Prager stress update with the
    Jaumann rate (paper eqs. 29-33; Bui, Fukagawa, Sako & Ohno 2008).
    Stress is tension positive, so the yield function reads

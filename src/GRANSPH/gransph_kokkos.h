@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: what the Kokkos styles share. SPHStateKokkos is the per-atom SPH
    state of a /kk integrator as DualViews (the pair style finds it there);
    DeviceParticles is the accessor for the neighbour sums of

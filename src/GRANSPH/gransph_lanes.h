@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: the host's explicit SIMD lanes, for x86-64 with AVX2 and FMA
    (GRANSPH_LANES is 0 elsewhere: on devices, in generic builds). A lane type
    holds one 256-bit vector, four doubles (Lanes4) or eight floats (Lanes8f),

@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: the neighbour sums of sph/granular over a full neighbour list,
    written once for the plain and the Kokkos pair styles, over the pair terms
    of gransph_pair_terms.h. Each sum runs over the neighbours of one particle

@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: what pair_style sph/granular does for one particle in each pass of
    an evaluation, written once for the plain style's loops and its Kokkos twin's
    kernels: the particle's pair data, a dummy particle's stress (eq. 8) and the

@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: the pairwise SPH terms of the paper and what a particle's sums
    give. Per pair, in scalar arguments (the vectorised neighbour loops of
    gransph_neighbour_sums.h call them): the Monaghan viscosity (eq. 7) and the

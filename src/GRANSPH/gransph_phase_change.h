@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: phase-change granular model of Dunatunga & Kamrin (JFM 2015) as used
    by Chen et al. (2019), eqs. 22-28: elastic "solid" below the static yield
    stress mu_s p, mu(I)-rheology plastic flow above it, stress-free

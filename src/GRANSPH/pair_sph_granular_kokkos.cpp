@@ -1,4 +1,10 @@
 /* ----------------------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANSPH: Kokkos twin of pair_style sph/granular.
 ------------------------------------------------------------------------- */
 

@@ -1,4 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------
    GRANSPH: Kokkos twin of pair_style sph/granular. Same neighbour sums
    (gransph_neighbour_sums.h) over a full Kokkos neighbour list, one particle
    per thread writing only to itself: no atomics.

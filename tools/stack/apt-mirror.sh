@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 # Sourced by tools/stack/deps.sh and tools/stack/sid-root.sh: the Debian mirror this machine's
 # own apt configuration uses, so that no registry host name is written in our code.
 #

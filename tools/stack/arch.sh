@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 # Sourced by tools/stack/deps.sh and tools/stack/sid-root.sh: the instruction set LAMMPS and the
 # plugin are compiled for.
 #   GRANSPH_ARCH=native   (default) this machine's: AVX2, FMA, AVX-512 where the CPU has them

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 # Fetch and build the dependencies, then build GRANSPH.
 #   tools/stack/build.sh                      LAMMPS 29Sep2021 + Kokkos 3.4 (tools/stack/deps.sh), in build/
 #   GRANSPH_STACK=2026 tools/stack/build.sh   LAMMPS 4Jul2026 + Kokkos 5.2 in the Debian sid root

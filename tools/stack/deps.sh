@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 # Install GRANSPH's dependencies from Debian's registry and build Kokkos + LAMMPS.
 #
 # Everything lands outside the git tree, in $GRANSPH_DEPS (default ~/.cache/gransph):

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 # The second stack: current LAMMPS (4Jul2026 or newer) with KOKKOS on Kokkos 5 (OpenMP),
 # in a Debian sid root, because Debian 12 cannot run the only Kokkos 5 we can get
 # (sid's binary libkokkos-dev needs glibc 2.38 and GCC 13's libstdc++).

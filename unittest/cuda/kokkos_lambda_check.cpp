@@ -1,3 +1,9 @@
+/* ----------------------------------------------------------------------
+   GRANSPH - granular flow with smoothed particle hydrodynamics in LAMMPS
+   Copyright (2026) the GRANSPH developers. This software is distributed
+   under the GNU General Public License, version 2 (LICENSE), as LAMMPS is.
+------------------------------------------------------------------------- */
+
 // Compiled (never run) by the CUDA:nvcc_compile check: the smallest device code
 // in the style of GRANSPH's /kk classes, so a broken CUDA Kokkos install or
 // wrong nvcc flags show up here rather than in a style.

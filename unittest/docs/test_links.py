@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Every relative link resolves: in README.md, doc/, examples/*/README.md, bench/ and
 validation/, each Markdown link or image ([text](target), ![alt](target), <img src=...>) and each
 reStructuredText link (`text <target>`_, .. image::/.. figure::) that is not a URL names

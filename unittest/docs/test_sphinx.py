@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """doc/ builds with Sphinx as LAMMPS builds its manual, without one warning.
 
 sphinx-build -W (every warning an error) builds the pages into a temporary folder, with

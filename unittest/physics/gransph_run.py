@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Run LAMMPS with GRANSPH through tools/lmp and read what it wrote."""
 
 import os

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The sound speed of the CFL timestep (eq. 19): by default (`cfl/sound reference`) the
 step is C h / sqrt(E / rho0) on every step of a column collapse, plain and /kk; with
 `cfl/sound local` it shrinks below that as grains at the surface dilate."""

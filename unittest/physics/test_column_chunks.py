@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The column-collapse example runs in chunks until the pile is at rest: its result
 does not depend on the chunk size. A coarse column for 200 steps (tmax falls
 between steps 100 and 200) in chunks of 100 and of 200 steps gives the same

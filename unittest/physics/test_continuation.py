@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """A run continues exactly across run commands and restarts: in.continuation run
 in one piece, in two runs, and in two processes through a restart file gives the
 same positions, velocities, density and stress to round-off (1e-12 of the largest

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Bad input stops LAMMPS with an error that names the problem, never a crash,
 a hang or silent NaNs; run as a batch job runs, with the screen and the log
 redirected to files, which must hold the message."""

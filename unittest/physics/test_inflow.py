@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """fix sph/inflow: a jet into empty space (in.inflow).
 
 Layer k leaves the nozzle plane at t_k = k dx / v (the first at t = 0, the setup

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The /kk styles on 2 OpenMP threads reproduce the plain styles to round-off:
 positions, velocities, density and stress after a few hundred steps of the
 column collapse (elastoplastic, dummy walls; also with the walls' velocity along

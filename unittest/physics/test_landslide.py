@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """examples/landslide runs: its site made by tools/terrain, read with the dummies' own
 normals, the barrier built on it, the sand placed on the bed; a short run keeps every
 grain and finite state (the fix stops on a non-finite one) and prints its result line;

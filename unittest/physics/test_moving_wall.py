@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """fix sph/move: a sand layer settling on a floor, with everything moving
 sideways at 5 m/s, matches the same run at rest (Galilean invariance: the floor
 is where the grains are in time when the pair runs, and it, with its ghosts,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The same short column collapse on 1 and 2 MPI ranks gives the same state
 (positions, velocities, density, stress) to round-off; also with the floor's own wall
 normals (which ghost dummies must carry) under wall/gradient normal."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """fix sph/normals: the normals its keywords set, on the atoms they name, stay with their
 atoms across ranks (2 ranks give 1 rank's state: ghosts carry the normals that a wall
 with a friction of its own reads) and restart files (a run continued from one equals

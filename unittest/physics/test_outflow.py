@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """fix sph/outflow: sand flowing off a floor smaller than its runout leaves the box.
 Without the fix the run stops, saying that atoms left the box and that fix sph/outflow
 removes them (the integrator says it before LAMMPS' own "Lost atoms"); with it (1 and

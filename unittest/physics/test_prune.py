@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The pair style's pruned rows (pair_style sph/granular prune) leave out no pair that
 interacts: in.continuation, a block squeezed past yield on a floor that accelerates
 sideways and sheared at 50/s (so that neighbours pass each other, and pairs enter the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """examples/python/column_stress.py runs through tools/python (the LAMMPS Python module of
 the stack's own LAMMPS source, nothing installed) and what it read into numpy with the
 module's extract functions equals what LAMMPS printed in the same run's log: at the end

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """README.md's minimal input runs as it stands there: the indented block under "A minimal
 input", saved as in.collapse in an empty folder and run by tools/lmp, collapses the
 column: the deposit's edge (compute sph/runout) starts at the column's radius and ends

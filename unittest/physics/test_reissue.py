@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Re-issuing a GRANSPH style starts from its defaults: examples/column_collapse with
 pair_style sph/granular (and the integrator fix) issued first with other options and then
 as the example issues it runs bit for bit as the example alone, with both models, plain

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Restart files and the pair style's settings record.
 
 restart/legacy-VERSION.restart was written by in.write with the code before the settings

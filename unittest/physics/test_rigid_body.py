@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Two-way coupling with LAMMPS rigid bodies (in.rigid_momentum): a cube of dummy
 particles moved by fix rigid or fix rigid/small, thrown at a block of sand without
 gravity, takes from the grains the exact reverse of the force it gives them, so that

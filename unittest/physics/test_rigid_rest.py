@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """A rigid block resting on a bed of sand (in.rigid_rest): a block of dummy particles
 moved by fix rigid, twice the sand's density, set on a periodic bed with its geostatic
 stress, comes to rest with the bed's force on it (the pair style's forces on its

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """A sand layer initially stress-free settles under gravity to the geostatic vertical stress:
 sigma_zz = -rho g depth within 5% at mid-height (periodic sideways, so no wall
 friction takes part of the weight)."""

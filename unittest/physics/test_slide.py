@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Dynamic basal friction: a sand layer of 1 or 2 particles on its level dummy floor, set
 sliding at 1 m/s, decelerates at mu g with the friction coefficient of Drucker-Prager's
 plane-strain matching (3 alpha_phi = 0.569 for phi = 37 deg, 0.411 for a second material

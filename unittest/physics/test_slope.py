@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Basal friction of layers of any thickness: a sand layer of 1, 2, 4 or 8 particles
 on its dummy floor, at two resolutions, holds on a slope 1.5 degrees below the slide
 angle its model declares and slides 1.5 degrees above it, without floating off or

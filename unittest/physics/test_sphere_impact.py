@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """examples/sphere_impact runs: a steel ball of fix rigid dropped into the sand bed at a
 coarse resolution (D / 5, a bed 3 D wide and 1.5 D deep) falls under its own weight
 until it meets the sand, enters the bed and is stopped by the grains before tmax (the

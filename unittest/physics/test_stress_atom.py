@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """compute sph/stress/atom in the settled layer of the Physics:settle test: the major
 principal stress at mid-depth is vertical within 5 degrees and equals the vertical stress
 within 2%; no grain mobilises more than its strength (ratio <= 1 + 1e-9); compute reduce

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """doc/terrain.md's minimal terrain input runs as it stands there: the block after its
 marker comment, saved as in.chute in an empty folder and run by tools/lmp, makes its site,
 seeds the sand, runs to the end and sets the sand moving down the chute; tools/terrain

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """A terrain wall carries a layer as a box floor does: a sand layer (4 particles deep,
 free ends and sides) on a plane inclined at 20 degrees that tools/terrain builds
 from an elevation grid (three layers of dummies with their normals, gravity vertical)

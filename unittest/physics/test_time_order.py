@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The predictor-corrector integrator is second order in time, with either predictor
 (fix keyword predictor midpoint, the default, and extrapolated): the error of an
 elastic standing wave at a fixed time falls by 4 each time dt halves."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Walls with a friction of their own (pair_style sph/granular wall/friction): a sand
 layer on a floor of interface friction angle delta (in.wall_friction)
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """compute sph/wallforce: a sand layer at rest on a dummy floor pushes on it with its
 weight m g (eq. 10), with no tangential force, on 1 and 2 ranks; a tilted normal gives
 the projection; fix gravity on the floor adds the floor's weight, with a warning; bad

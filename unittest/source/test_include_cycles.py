@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """No include cycle among GRANSPH's sources: a module (x.h with its x.cpp) may not include,
 directly or through others, a header whose module includes it back. Reads the #include
 lines of src/GRANSPH; exits 1 naming each cycle.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 # tools/stack/sid-root.sh when Debian sid moves: its decisions, run for real (--plan, and the
 # lock of a root in place) against fixture apt repositories and fixture roots. Needs no
 # network and builds nothing: apt-get/apt-cache read the fixtures, dpkg-query the roots'

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """tools/terrain: dummy layers beneath a terrain surface.
 
   /usr/bin/python3 unittest/tools/test_terrain.py                  # everything

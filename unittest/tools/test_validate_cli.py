@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """tools/research/validate's command line: each study a subcommand, and the command lines
 of before the subcommands (the mode flags --quick, --convergence, --cfl C ..., which the
 reports of validation/ record) read as the same subcommand with the same options. Runs

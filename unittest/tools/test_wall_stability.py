@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """tools/research/wall-stability: the linear stability of a layer at rest on a dummy floor.
 
 Checks the analysis that validation/README.md ("The rough floor's thinnest layer")

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """GRANSPH's research tools in Python: the shared LAMMPS runner (lammps), the measures a
 study and the GPU check take from a run (measures), the bench's cases (bench), the
 validation studies (validate) and the GPU check (gpu_check).

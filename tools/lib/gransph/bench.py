@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """GRANSPH throughput on this machine: particle-steps and grain-steps per second of
 the examples' inputs, for the plain styles on 1 and 2 MPI ranks and the /kk styles
 on 2 OpenMP threads (the last two also with pair_style ... precision mixed), beside

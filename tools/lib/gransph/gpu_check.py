@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """GRANSPH on a GPU: check and time the CUDA bundle that tools/gpu/gpu-bundle builds.
 
   tools/gpu/gpu-check             # on the GPU machine with gpu-bundle/ carried: under 8 minutes

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Running LAMMPS through tools/lmp: the command line of a run (variables, MPI ranks or
 the /kk styles on threads), its folder, log, wall time and result line."""
 

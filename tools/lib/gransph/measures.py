@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """What the studies and the GPU check take from a flume run's wall force: its history,
 its largest mean over a load cell's window and its integral."""
 

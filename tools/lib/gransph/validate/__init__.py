@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The validation studies of GRANSPH (tools/research/validate): a module per study (paper and
 jets: the paper's four cases in validation/report.md; convergence, basal_friction, flume,
 cfl, sphere_impact: their folders of validation/), the column's measures (collapse), the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Thin layers set sliding on a level dummy floor: validation/basal_friction/."""
 
 import math

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The CFL constant of the integrators' timestep: validation/cfl/."""
 
 import math

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """tools/research/validate: the paper's validation cases and the convergence studies, each a
 subcommand writing its report (Markdown) and plots into its folder of validation/.
 

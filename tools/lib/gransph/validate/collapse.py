@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The column collapse's measures: Lube et al.'s laws, the deposit's snapshots, edge,
 thickness profiles, skirt and tail, and the fronts' pictures (the paper's case and the
 convergence study share them)."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """What every study takes from a run (a number of its result line, its wall time) and the
 sand's friction the thin-layer studies compare with."""
 

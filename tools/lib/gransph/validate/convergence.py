@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The column collapse in resolution (axisymmetric or in plane strain): validation/convergence/."""
 
 import os

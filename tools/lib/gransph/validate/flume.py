@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The flume impact in resolution: validation/flume/."""
 
 import sys

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The jets of the paper's sections 5.3 and 5.4: the collision's drift speed, the wavy
 jet's wavelength on a film."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """The paper's four cases at reduced (or the paper's) resolution: validation/report.md."""
 
 import os

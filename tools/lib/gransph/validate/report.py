@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """A study's report: Markdown lines, written under the output folder with the run time so
 far (a study writes it after each part, complete at the end)."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """A steel ball dropped into a sand bed: validation/sphere_impact/."""
 
 import math
