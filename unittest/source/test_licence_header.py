@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """Every source file of the tree carries the licence notice near its top: the GPL-2.0
 block of LAMMPS' form in C++ files, an SPDX line in scripts. Lists the files git tracks
 (the tree's top: argument or this file's ../..) and exits 1 naming each one without it.
