@@ -12,6 +12,7 @@
 
 #include "fix_sph_integrate.h"
 
+#include "gransph_find_fix.h"
 #include "gransph_integrator.h"
 #include "gransph_lammps_compat.h"
 #include "gransph_pair_settings.h"
@@ -53,16 +54,8 @@ constexpr double RECORD_FOLLOWS = -1.0;
 
 FixSPHIntegrate &FixSPHIntegrate::find(LAMMPS *lmp, const std::string &who)
 {
-  FixSPHIntegrate *found = nullptr;
-  for (int i = 0; i < lmp->modify->nfix; ++i)
-    if (auto fix = dynamic_cast<FixSPHIntegrate *>(lmp->modify->fix[i])) {
-      if (found)
-        lmp->error->all(FLERR,
-                        "{}: fixes {} and {} are both GRANSPH integrators; only one may be "
-                        "defined",
-                        who, found->id, fix->id);
-      found = fix;
-    }
+  FixSPHIntegrate *found =
+      GRANSPH::find_only_fix<FixSPHIntegrate>(lmp, who, "GRANSPH integrators");
   if (!found)
     lmp->error->all(FLERR,
                     "{} needs a GRANSPH integrator fix (fix sph/elastoplastic or fix "

@@ -10,6 +10,7 @@
 
 #include "fix_sph_normals.h"
 
+#include "gransph_find_fix.h"
 #include "gransph_lammps_compat.h"
 
 #include "atom.h"
@@ -84,17 +85,8 @@ FixSPHNormals::~FixSPHNormals()
 
 const FixSPHNormals *FixSPHNormals::find(LAMMPS *lmp, const std::string &who)
 {
-  const FixSPHNormals *found = nullptr;
-  for (int i = 0; i < lmp->modify->nfix; ++i)
-    if (auto fix = dynamic_cast<const FixSPHNormals *>(lmp->modify->fix[i])) {
-      if (found)
-        lmp->error->all(FLERR,
-                        "{}: fixes {} and {} both hold wall normals (fix sph/normals); "
-                        "give them all to one",
-                        who, found->id, fix->id);
-      found = fix;
-    }
-  return found;
+  return GRANSPH::find_only_fix<const FixSPHNormals>(lmp, who,
+                                                     "wall-normal fixes (sph/normals)");
 }
 
 int FixSPHNormals::setmask()

@@ -155,7 +155,7 @@ for name, fields, expected in (
 CASES.append(("two fixes sph/normals",
               dict(fix=GOOD["fix"] + "\nfix n1 floor sph/normals set floor 0 0 1\n"
                                      "fix n2 floor sph/normals set floor 0 0 1"),
-              "fixes n1 and n2 both hold wall normals"))
+              "fixes n1 and n2 are both wall-normal fixes \\(sph/normals\\); only one may be defined"))
 
 # expansion faster than dt can follow: rho < 0, caught with the atom's ID
 # the block at rest with a timestep 75 times its CFL limit (2.7e-5 s): the elastic
