@@ -265,7 +265,7 @@ int main(int argc, char **argv)
     num[i] = g.rows[i].size();
     row_pairs += num[i];
   }
-  const Viscosity visc{0.25, 0.0, false, Viscosity::BULK, 30.0};
+  const Viscosity visc{0.25, 0.0, false, Viscosity::BULK};
   const Rows rows{g.p.data(), first.data(), num.data(), WendlandC2::make(h, 3), visc};
   // the shapes' sums: the generic loop over the rows, the host's lanes over the rows (what
   // the pair style runs where it has them), the clusters

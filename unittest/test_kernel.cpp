@@ -29,7 +29,7 @@ PairParticle particle(double mass, double rho, const Sym3 &sigma)
 }
 
 // the paper's viscosity, alpha = beta = 1 with c = sqrt(E / rho)
-const Viscosity PAPER_VISCOSITY{1.0, 1.0, true, Viscosity::PAPER, 0.0};
+const Viscosity PAPER_VISCOSITY{1.0, 1.0, true, Viscosity::PAPER};
 
 // Simpson's rule over the radial support [0, 2h] of r^(dim-1) W(r)
 double radial_integral(int dim, double h)
@@ -98,7 +98,7 @@ struct Neighbourhood {
   std::vector<double> mus;        // a dummy's wall friction (wall_friction), -1: rough
   std::vector<double> slides;     // 4 per particle: a grain's share and slide direction
   WendlandC2 kernel;
-  Viscosity visc{0.0, 0.0, false, Viscosity::BULK, 0.0};
+  Viscosity visc{0.0, 0.0, false, Viscosity::BULK};
   bool wall_normal = false, shape_sums = true, wall_friction = false;
   WallStick stick{false, {0.0, 0.0, 0.0}, 0.0};
 

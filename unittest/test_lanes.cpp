@@ -36,7 +36,7 @@ struct Box {
   std::vector<Role> roles;
   std::vector<std::vector<int>> rows;
   WendlandC2 kernel;
-  Viscosity visc{0.25, 0.1, false, Viscosity::BULK, 30.0};
+  Viscosity visc{0.25, 0.1, false, Viscosity::BULK};
   bool wall_normal = false, shape_sums = false, wall_friction = false;
   WallStick stick{false, {0.0, 0.0, 0.0}, 0.0};
 

@@ -7,14 +7,15 @@
 /* ----------------------------------------------------------------------
    GRANSPH: compute sph/runout.
 
-   The grains' volume (m / rho0) is binned by distance r from a vertical axis in
-   fine bins; the window of BINS_PER_WINDOW bins centred on each bin (an annulus
-   of the given width in 3d, two strips in 2d) gives the deposit's equivalent
-   thickness there, the volume in it over its area. The deposit edge is the
-   outermost grain in a layer at least threshold * scale thick: a thickness fixed
-   in the problem's units (a fraction of the column's radius, say), so the edge
-   means the same at every resolution, while a layer thinner than that (the skirt)
-   is reported by its volume fraction beyond the edge rather than hidden.
+   The grains' volume (m / rho0 of each one's material) is binned by distance
+   r from a vertical axis in fine bins; the window of BINS_PER_WINDOW bins
+   centred on each bin (an annulus of the given width in 3d, two strips in 2d)
+   gives the deposit's equivalent thickness there, the volume in it over its
+   area. The deposit edge is the outermost grain in a layer at least
+   threshold * scale thick: a thickness fixed in the problem's units (a fraction
+   of the column's radius, say), so the edge means the same at every
+   resolution, while a layer thinner than that (the skirt) is reported by its
+   volume fraction beyond the edge rather than hidden.
 ------------------------------------------------------------------------- */
 
 #include "compute_sph_runout.h"
@@ -41,7 +42,7 @@ enum { EDGE, R95, RMAX, SKIRT, THICKNESS, ZMAX, NVALUES };
 ------------------------------------------------------------------------- */
 
 ComputeSPHRunout::ComputeSPHRunout(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), axis{0.0, 0.0}, threshold(0.05), rho0(0.0)
+    Compute(lmp, narg, arg), axis{0.0, 0.0}, threshold(0.05), materials(nullptr)
 {
   const int naxis = domain->dimension == 3 ? 2 : 1;
   if (narg < 5 + naxis)
@@ -75,7 +76,7 @@ ComputeSPHRunout::~ComputeSPHRunout()
 
 void ComputeSPHRunout::init()
 {
-  rho0 = FixSPHIntegrate::find(lmp, "Compute sph/runout").material.rho0;
+  materials = &FixSPHIntegrate::find(lmp, "Compute sph/runout").materials;
 }
 
 double ComputeSPHRunout::radius(const double *x) const
@@ -86,6 +87,7 @@ double ComputeSPHRunout::radius(const double *x) const
 
 double ComputeSPHRunout::grain_volume(int i) const
 {
+  const double rho0 = materials->rho0[materials->of(atom->mask[i])];
   return (atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]]) / rho0;
 }
 

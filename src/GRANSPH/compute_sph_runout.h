@@ -14,6 +14,7 @@
 #define LMP_COMPUTE_SPH_RUNOUT_H
 
 #include "compute.h"
+#include "gransph_materials.h"
 
 #include <vector>
 
@@ -31,7 +32,7 @@ class ComputeSPHRunout : public Compute {
   double scale;        // the thickness the threshold is a fraction of
   double width;        // of the sliding window (annulus) the thickness is taken over
   double threshold;    // edge: the thickness falls below threshold * scale
-  double rho0;         // a grain's volume is m / rho0
+  const GRANSPH::MaterialTable *materials;    // a grain's volume is m / its rho0
   std::vector<double> volume;    // per fine bin, summed over the ranks
 
   static constexpr int BINS_PER_WINDOW = 9;    // odd: a window is centred on a bin

@@ -85,7 +85,7 @@ void ComputeSPHStressAtom::compute_peratom()
       out[MAJOR_X + k] = s.major[k];
     }
     out[LODE] = s.lode;
-    out[MOBILISED] = fix->mobilised_ratio(sigma);
+    out[MOBILISED] = fix->mobilised_ratio(fix->materials.of(mask[i]), sigma);
     out[REGIME] = state.regime(i);
   }
 }

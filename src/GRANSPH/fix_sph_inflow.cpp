@@ -39,6 +39,7 @@
 #include "modify.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -222,10 +223,13 @@ int FixSPHInflow::setmask()
 void FixSPHInflow::init()
 {
   integrator = &FixSPHIntegrate::find(lmp, "Fix sph/inflow");
-  if (integrator->igroup != 0 && integrator->igroup != igroup)
+  const std::vector<int> &materials = integrator->material_groups;
+  const bool of_material = std::find(materials.begin(), materials.end(), igroup) != materials.end();
+  if (integrator->igroup != 0 && integrator->igroup != igroup && !of_material)
     error->all(FLERR,
                "Fix sph/inflow: its group {} is not integrated: the integrator fix {} acts on "
-               "group {}; give fix sph/inflow that group or the integrator group all",
+               "group {}; give fix sph/inflow that group, the group of one of its materials, "
+               "or the integrator group all",
                group->names[igroup], integrator->id, group->names[integrator->igroup]);
   if (groupbit == integrator->wallbit)
     error->all(FLERR, "Fix sph/inflow: its group {} is the walls group of the integrator fix {}",
@@ -348,7 +352,7 @@ int FixSPHInflow::insert_layer(double t_emit, double t_place)
     atom->avec->create_atom(ntype, x);
     const int n = atom->nlocal - 1;
     atom->image[n] = image;
-    atom->mask[n] |= groupbit;
+    atom->mask[n] |= groupbit | integrator->groupbit;    // a material's grains, or the fix's
     for (int a = 0; a < 3; ++a) atom->v[n][a] = speed * normal[a];
     if (atom->rmass_flag) atom->rmass[n] = new_mass;
     modify->create_attribute(n);

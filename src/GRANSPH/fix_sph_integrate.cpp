@@ -64,19 +64,56 @@ FixSPHIntegrate &FixSPHIntegrate::find(LAMMPS *lmp, const std::string &who)
   return *found;
 }
 
+// material NAME of FILE for the grains of GROUP: one group per material, of grains only
+// (checked at each run: check_material_groups), from files that declare the same units
+void FixSPHIntegrate::add_material(const std::string &group_name, const std::string &file,
+                                   const std::string &name, const std::string &own_file,
+                                   const std::string &units)
+{
+  const std::string style_name = std::string("fix ") + style;
+  const int igroup = group->find(group_name);
+  if (igroup < 0)
+    error->all(FLERR, "{}: material group {} does not exist", style_name, group_name);
+  if (igroup == 0 || igroup == this->igroup)
+    error->all(FLERR, "{}: material group {} holds every grain: give the fix that material "
+               "instead", style_name, group_name);
+  for (int k = 1; k < (int) material_groups.size(); ++k)
+    if (material_groups[k] == igroup)
+      error->all(FLERR, "{}: group {} is given two materials, {} and {}", style_name,
+                 group_name, material_records[k].name, name);
+  if ((int) material_records.size() == GRANSPH::MaterialTable::MAX)
+    error->all(FLERR, "{}: more than {} materials", style_name, GRANSPH::MaterialTable::MAX);
+  const std::string its_units =
+      utils::get_potential_units(utils::get_potential_file_path(file), "GRANSPH material");
+  const auto declared = [](const std::string &u) {
+    return u.empty() ? std::string("no units (no UNITS: on its first line)") : "units " + u;
+  };
+  if (its_units != units)
+    error->all(FLERR, "{}: material file {} declares {}, the fix's material file {} {}: the "
+               "materials of a run must declare the same units", style_name, file,
+               declared(its_units), own_file, declared(units));
+  material_records.push_back(GranSPHMaterial::read(lmp, file, name, style_name));
+  material_groups.push_back(igroup);
+}
+
 /* ---------------------------------------------------------------------- */
 
 FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), wallbit(0), state(nullptr), rates(nullptr), start(nullptr),
-    rho_init(0.0), cfl(0.2), cfl_sound_reference(1), predictor_extrapolated(0), nrates(RATES_DT),
+    cfl(0.2), cfl_sound_reference(1), predictor_extrapolated(0), nrates(RATES_DT),
     geostatic_flag(0), surface_height(0.0),
     restored(0), last_dt(0.0), ran_with_pair_settings(false), fresh_start(nullptr)
 {
   const std::string style_name = std::string("fix ") + style;
   if (narg < 5) error->all(FLERR, "Illegal {} command: need a material file and name", style_name);
 
-  material = GranSPHMaterial::read(lmp, arg[3], arg[4], style_name);
-  rho_init = material.rho0;
+  material_records.push_back(GranSPHMaterial::read(lmp, arg[3], arg[4], style_name));
+  material_groups.push_back(-1);
+  const std::string units = utils::get_potential_units(utils::get_potential_file_path(arg[3]),
+                                                       "GRANSPH material");
+  double rho_init = material_records[0].rho0;
+  GranSPHMaterial::Matching matching = GranSPHMaterial::PLANE_STRAIN;
+  GranSPHMaterial::PlasticStep plastic = GranSPHMaterial::RETURN_MAPPING;
 
   int iarg = 5;
   // keyword iarg's value, one of two: 0 for the first, 1 for the second
@@ -90,7 +127,14 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   while (iarg < narg) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", style_name, key);
-    if (key == "walls") {
+    if (key == "material") {
+      if (iarg + 3 >= narg)
+        error->all(FLERR, "{}: keyword material needs a group, a material file and a name",
+                   style_name);
+      add_material(arg[iarg + 1], arg[iarg + 2], arg[iarg + 3], arg[3], units);
+      iarg += 4;
+      continue;
+    } else if (key == "walls") {
       const int igroup = group->find(arg[iarg + 1]);
       if (igroup < 0) error->all(FLERR, "{}: walls group {} does not exist", style_name, arg[iarg + 1]);
       wallbit = group->bitmask[igroup];
@@ -115,11 +159,11 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
       if (!utils::strmatch(style, "^sph/elastoplastic"))
         error->all(FLERR, "{}: keyword {} is for fix sph/elastoplastic only", style_name, key);
       if (key == "matching")
-        material.dp_matching = either("plane_strain", "simple_shear") ? GranSPHMaterial::SIMPLE_SHEAR
-                                                                     : GranSPHMaterial::PLANE_STRAIN;
+        matching = either("plane_strain", "simple_shear") ? GranSPHMaterial::SIMPLE_SHEAR
+                                                          : GranSPHMaterial::PLANE_STRAIN;
       else
-        material.dp_plastic = either("return", "paper") ? GranSPHMaterial::EXPLICIT_RATE
-                                                        : GranSPHMaterial::RETURN_MAPPING;
+        plastic = either("return", "paper") ? GranSPHMaterial::EXPLICIT_RATE
+                                            : GranSPHMaterial::RETURN_MAPPING;
     } else if (key == "geostatic") {
       geostatic_flag = 1;
       surface_height = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -129,6 +173,24 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
   }
 
   if (!atom->rmass_flag && !atom->mass) error->all(FLERR, "{} needs per-type or per-atom masses", style_name);
+  if (geostatic_flag && material_records.size() > 1)
+    error->all(FLERR, "{}: geostatic takes one density and is for one material, not {}: let "
+               "layers of several materials settle under gravity instead", style_name,
+               material_records.size());
+
+  // every material takes the model's choices (matching, plastic) alike
+  materials.n = material_records.size();
+  for (int k = 0; k < materials.n; ++k) {
+    GranSPHMaterial &m = material_records[k];
+    m.dp_matching = matching;
+    m.dp_plastic = plastic;
+    materials.bits[k] = k ? group->bitmask[material_groups[k]] : 0;
+    materials.any_bits |= materials.bits[k];
+    materials.E[k] = m.E;
+    materials.c0[k] = sqrt(m.bulk_modulus() / m.rho0);
+    materials.rho0[k] = m.rho0;
+    materials.rho_init[k] = k ? m.rho0 : rho_init;
+  }
 
   time_integrate = 1;
   restart_global = 1;
@@ -184,6 +246,47 @@ void FixSPHIntegrate::init()
   int any = 0;
   MPI_Allreduce(&overlap, &any, 1, MPI_INT, MPI_MAX, world);
   if (any) error->all(FLERR, "Fix {}: an atom is in both the fix group and the walls group", style);
+  check_material_groups();
+}
+
+// Collective: each material group still there; no grain claimed by two materials and no
+// dummy particle by one (the first such atom named, with its material groups)
+void FixSPHIntegrate::check_material_groups() const
+{
+  if (materials.n == 1) return;
+  for (int k = 1; k < materials.n; ++k)
+    if (!group->names[material_groups[k]] ||
+        group->bitmask[material_groups[k]] != materials.bits[k])
+      error->all(FLERR, "Fix {}: the group of material {} was deleted", style,
+                 material_records[k].name);
+  const auto claims = [&](int mask) {
+    std::string names;
+    for (int k = 1; k < materials.n; ++k)
+      if (mask & materials.bits[k])
+        names += fmt::format(" {} ({})", group->names[material_groups[k]], material_records[k].name);
+    return names;
+  };
+  const int *mask = atom->mask;
+  for (const bool walls : {false, true}) {
+    // the lowest ID of an atom at fault, and its group bits
+    tagint first = MAXTAGINT, lowest = MAXTAGINT;
+    for (int i = 0; i < atom->nlocal; ++i) {
+      const int claimed = mask[i] & materials.any_bits;
+      const bool at_fault = walls ? (mask[i] & wallbit) && claimed
+                                  : (mask[i] & groupbit) && (claimed & (claimed - 1));
+      if (at_fault) first = MIN(first, atom->tag[i]);
+    }
+    MPI_Allreduce(&first, &lowest, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    if (lowest == MAXTAGINT) continue;
+    const int i = atom->map(lowest);
+    int bits = (i >= 0 && i < atom->nlocal) ? mask[i] : 0, all_bits = 0;
+    MPI_Allreduce(&bits, &all_bits, 1, MPI_INT, MPI_BOR, world);
+    if (walls)
+      error->all(FLERR, "Fix {}: dummy particle {} of the walls group is in the material group{}: "
+                 "a material is for grains only", style, lowest, claims(all_bits));
+    error->all(FLERR, "Fix {}: grain {} is claimed by two materials, by the groups{}", style,
+               lowest, claims(all_bits));
+  }
 }
 
 // before the setup force evaluation: the geostatic stress, so that the first rates
@@ -191,6 +294,7 @@ void FixSPHIntegrate::init()
 void FixSPHIntegrate::setup_pre_force(int /*vflag*/)
 {
   sync_host();
+  if (materials.n > 1 && !restored) start_materials_at_their_density();
   if (geostatic_flag && !restored) init_geostatic_stress();
   geostatic_flag = 0;
   fresh_start = why_not_continue();
@@ -380,14 +484,20 @@ void FixSPHIntegrate::gravity_vector(double *g) const
 void FixSPHIntegrate::reset_cfl_timestep()
 {
   if (cfl == 0.0) return;
-  double local[2] = {-1.0, -DBL_MAX};
+  constexpr int N = 1 + GRANSPH::MaterialTable::MAX;
+  double local[N], global[N];
+  local[0] = -1.0;
+  for (int k = 0; k < materials.n; ++k) local[1 + k] = -DBL_MAX;
   cfl_maxima(local);
-  double global[2];
-  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(local, global, 1 + materials.n, MPI_DOUBLE, MPI_MAX, world);
   if (global[0] < 0.0) return;    // no granular particles anywhere
-  const double rho = GRANSPH::cfl_density(-global[1], rho_init, cfl_sound_reference);
-  set_timestep(GRANSPH::cfl_timestep(cfl, smoothing_length(), sqrt(global[0]) * force->ftm2v,
-                                     GRANSPH::sound_speed(material.E, rho)));
+  // the fastest sound of all materials (of a material without grains: none, at DBL_MAX)
+  double c = 0.0;
+  for (int k = 0; k < materials.n; ++k) {
+    const double rho = GRANSPH::cfl_density(-global[1 + k], materials.rho_init[k], cfl_sound_reference);
+    c = MAX(c, GRANSPH::sound_speed(materials.E[k], rho));
+  }
+  set_timestep(GRANSPH::cfl_timestep(cfl, smoothing_length(), sqrt(global[0]) * force->ftm2v, c));
 }
 
 void FixSPHIntegrate::cfl_maxima(double *local)
@@ -403,7 +513,9 @@ void FixSPHIntegrate::cfl_maxima(double *local)
     const double m = rmass ? rmass[i] : mass[type[i]];
     const double a2 = (f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]) / (m * m);
     local[0] = MAX(local[0], a2);
-    if (!cfl_sound_reference) local[1] = MAX(local[1], -state[i][RHO]);
+    if (cfl_sound_reference) continue;
+    const int k = materials.of(mask[i]);
+    local[1 + k] = MAX(local[1 + k], -state[i][RHO]);
   }
 }
 
@@ -418,6 +530,15 @@ void FixSPHIntegrate::set_timestep(double dt)
   for (int i = 0; i < modify->nfix; i++) modify->fix[i]->reset_dt();
 }
 
+// Grains that have not stepped start at the density of their material: groups are
+// often made after the atoms, which then started at the fix's own (set_arrays)
+void FixSPHIntegrate::start_materials_at_their_density()
+{
+  for (int i = 0; i < atom->nlocal; ++i)
+    if ((atom->mask[i] & groupbit) && start[i][STEPPED] == 0.0)
+      state[i][RHO] = materials.rho_init[materials.of(atom->mask[i])];
+}
+
 /* ----------------------------------------------------------------------
    geostatic initial stress: sigma_v = rho0 |g| (z - z_s) below the surface
    (vertical = z in 3D, y in 2D), sigma_h = K0 sigma_v with K0 = nu / (1 - nu)
@@ -430,7 +551,8 @@ void FixSPHIntegrate::init_geostatic_stress()
   const int up = domain->dimension == 3 ? 2 : 1;
   const double gmag = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
   if (gmag == 0.0) error->all(FLERR, "Fix {} geostatic needs a fix gravity", style);
-  const double k0 = material.nu / (1.0 - material.nu);
+  const double k0 = material_records[0].nu / (1.0 - material_records[0].nu);
+  const double rho_init = materials.rho_init[0];
   double **x = atom->x;
   const int *mask = atom->mask;
   for (int i = 0; i < atom->nlocal; ++i) {
@@ -502,7 +624,7 @@ void FixSPHIntegrate::copy_arrays(int i, int j, int /*delflag*/)
 void FixSPHIntegrate::set_arrays(int i)
 {
   sync_host();
-  state[i][RHO] = rho_init;
+  state[i][RHO] = materials.rho_init[materials.of(atom->mask[i])];
   for (int k = 1; k < NSTATE; ++k) state[i][k] = 0.0;    // stress-free, ELASTIC
   for (int k = 0; k < nrates; ++k) rates[i][k] = 0.0;
   for (int k = 0; k < NSTART; ++k) start[i][k] = 0.0;

@@ -26,6 +26,7 @@
 #include "atom.h"
 #include "fix.h"
 #include "gransph_material.h"
+#include "gransph_materials.h"
 #include "gransph_pair_settings.h"
 #include "gransph_state.h"
 #include "gransph_tensor.h"
@@ -75,15 +76,17 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
             {start ? start[0] : nullptr}};
   }
   int wallbit;       // group bit of the dummy-wall particles (0: no walls)
-  GranSPHMaterial material;
+  // The grains' materials: the fix's own (index 0), then those of its keywords material
+  // GROUP FILE NAME in order, each with the group (-1: the fix's own) whose grains it
+  // claims; and their table, which the per-particle code reads (gransph_materials.h)
+  std::vector<GranSPHMaterial> material_records;
+  std::vector<int> material_groups;
+  GRANSPH::MaterialTable materials;
 
   virtual void forward_comm_state();    // ghosts get fresh rho and sigma
-  // What compute sph/stress/atom reads: the share of the model's strength that the
-  // stress sigma uses (1 at yield), and state up to date on the host.
-  virtual double mobilised_ratio(const GRANSPH::Sym3 &sigma) const = 0;
-  // the friction coefficient at which the model's layers slide (pair_style sph/granular
-  // wall/friction group material)
-  virtual double slide_friction() const = 0;
+  // What compute sph/stress/atom reads: the share of the strength of material k's model
+  // that the stress sigma uses (1 at yield), and state up to date on the host.
+  virtual double mobilised_ratio(int k, const GRANSPH::Sym3 &sigma) const = 0;
   void sync_state_host() { sync_host(STATE_ONLY); }
   void gravity_vector(double *g) const;  // acceleration of the fix gravity on the grains
   // At a run's setup: whether the run continues the last step's (its first step takes
@@ -96,7 +99,6 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   double **rates;    // drho/dt, strain rate (6), spin (xy xz yz), acceleration
   double **start;    // v, rho, sigma at the start of the step; last wall velocity; stepped;
                      // last wall force
-  double rho_init;      // initial density of all particles (material rho0 by default)
   double cfl;           // CFL factor of eq. 19; 0 keeps the LAMMPS timestep
   int cfl_sound_reference;    // eq. 19's sound speed at rho_init, not at each grain's density
   int predictor_extrapolated;    // the predictor's rates extrapolated to the step's start
@@ -119,7 +121,8 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   void check_plane() const;
   void reset_cfl_timestep();
   // eq. 19's maxima over this rank's grains into local: max |a|^2 (left negative without
-  // grains) and, with cfl/sound local, minus their lowest density
+  // grains) and, with cfl/sound local, from local[1] on minus the lowest density of the
+  // grains of each material
   virtual void cfl_maxima(double *local);
   void set_timestep(double dt);
 
@@ -131,6 +134,11 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   const char *fresh_start;                   // why this run cannot continue, or nullptr
   std::vector<double> saved;                 // the arrays across the setup evaluation
 
+  void add_material(const std::string &group_name, const std::string &file,
+                    const std::string &name, const std::string &own_file,
+                    const std::string &units);
+  void check_material_groups() const;
+  void start_materials_at_their_density();
   void init_geostatic_stress();
   const char *why_not_continue() const;
   void forget_steps();

@@ -34,9 +34,12 @@ template <class M> struct VectorisedStep {
 
 template <class Model> class FixSPHModel : public FixSPHIntegrate {
  public:
-  FixSPHModel(class LAMMPS *lmp, int narg, char **arg) :
-      FixSPHIntegrate(lmp, narg, arg), model(Model::from(material))
+  FixSPHModel(class LAMMPS *lmp, int narg, char **arg) : FixSPHIntegrate(lmp, narg, arg)
   {
+    for (int k = 0; k < materials.n; ++k) {
+      models.push_back(Model::from(material_records[k]));
+      materials.slide_friction[k] = models[k].slide_friction();
+    }
   }
 
   void setup(int vflag) override
@@ -50,13 +53,12 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
     if (step(GRANSPH::CORRECT)) check_finite();    // which atom, in the error message
   }
 
-  double mobilised_ratio(const GRANSPH::Sym3 &sigma) const override
+  double mobilised_ratio(int k, const GRANSPH::Sym3 &sigma) const override
   {
-    return model.mobilised_ratio(sigma);
+    return models[k].mobilised_ratio(sigma);
   }
-  double slide_friction() const override { return model.slide_friction(); }
 
-  const Model model;
+  std::vector<Model> models;    // of each material (FixSPHIntegrate::materials)
 
  protected:
   using Stage = GRANSPH::Stage;
@@ -98,34 +100,42 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
   };
 
   // Every grain's predictor or corrector step, with x, v, f where this rank's atoms have
-  // them: chunks(advance) runs advance(begin, end) over [0, advance.n) of the grains, at
-  // once (the plain fix) or in parallel chunks (its Kokkos twin on the host), and returns
-  // the sum of what advance returns: the corrector's count of grains with a bad new state
-  // (GRANSPH::bad_state).
+  // them, material by material: chunks(advance) runs advance(begin, end) over [0,
+  // advance.n) of a material's grains, at once (the plain fix) or in parallel chunks (its
+  // Kokkos twin on the host), and returns the sum of what advance returns: the
+  // corrector's count of grains with a bad new state (GRANSPH::bad_state).
   template <class Chunks> int step_grains(Stage stage, double **x, double **v, double **f,
                                           Chunks chunks)
   {
     // within a run, atoms are exchanged, sorted, created and deleted only when a step
     // reneighbours, between its predictor and its corrector
     if (!grains_listed || (stage == GRANSPH::CORRECT && neighbor->ago == 0)) list_grains();
-    if (grains.empty()) return 0;
-    const GrainRows rows{{x[0]},          {v[0]},    {f[0]},        {state[0]},
-                         {rates[0], nrates}, {start[0]}, grains.data(), grain_mass.data()};
-    const int n = grains.size();
     const double dt = update->dt, ftm2v = force->ftm2v;
-    // the model's variant for this run, so that the loop has no branch on it
     int bad = 0;
-    with_run_variant(model, [&](const auto &m) {    // found by ADL: the model's own
-      using M = typename std::decay<decltype(m)>::type;
-      using GRANSPH::CORRECT;
-      using GRANSPH::PREDICT;
-      if (stage == PREDICT)
-        bad = predictor_extrapolated ? chunks(Advance<PREDICT, true, M>{m, rows, n, dt, ftm2v})
-                                     : chunks(Advance<PREDICT, false, M>{m, rows, n, dt, ftm2v});
-      else
-        bad = predictor_extrapolated ? chunks(Advance<CORRECT, true, M>{m, rows, n, dt, ftm2v})
-                                     : chunks(Advance<CORRECT, false, M>{m, rows, n, dt, ftm2v});
-    });
+    for (int k = 0; k < materials.n; ++k) {
+      const int n = first_grain[k + 1] - first_grain[k];
+      if (n == 0) continue;
+      const GrainRows rows{{x[0]},
+                           {v[0]},
+                           {f[0]},
+                           {state[0]},
+                           {rates[0], nrates},
+                           {start[0]},
+                           grains.data() + first_grain[k],
+                           grain_mass.data() + first_grain[k]};
+      // the model's variant for this run, so that the loop has no branch on it
+      with_run_variant(models[k], [&](const auto &m) {    // found by ADL: the model's own
+        using M = typename std::decay<decltype(m)>::type;
+        using GRANSPH::CORRECT;
+        using GRANSPH::PREDICT;
+        if (stage == PREDICT)
+          bad += predictor_extrapolated ? chunks(Advance<PREDICT, true, M>{m, rows, n, dt, ftm2v})
+                                        : chunks(Advance<PREDICT, false, M>{m, rows, n, dt, ftm2v});
+        else
+          bad += predictor_extrapolated ? chunks(Advance<CORRECT, true, M>{m, rows, n, dt, ftm2v})
+                                        : chunks(Advance<CORRECT, false, M>{m, rows, n, dt, ftm2v});
+      });
+    }
     return bad;
   }
 
@@ -138,9 +148,11 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
   }
 
  private:
-  // the owned atoms of the group and their masses, for the step's loop
+  // the owned atoms of the group and their masses, for the step's loop: those of material
+  // k from first_grain[k] to first_grain[k + 1]
   std::vector<int> grains;
   std::vector<double> grain_mass;
+  std::vector<int> first_grain;
   bool grains_listed = false;
 
   void list_grains()
@@ -148,11 +160,16 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
     grains_listed = true;
     grains.clear();
     grain_mass.clear();
-    for (int i = 0; i < atom->nlocal; ++i)
-      if (atom->mask[i] & groupbit) {
-        grains.push_back(i);
-        grain_mass.push_back(atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]]);
-      }
+    first_grain.assign(1, 0);
+    const int *mask = atom->mask;
+    for (int k = 0; k < materials.n; ++k) {
+      for (int i = 0; i < atom->nlocal; ++i)
+        if ((mask[i] & groupbit) && materials.holds(k, mask[i])) {
+          grains.push_back(i);
+          grain_mass.push_back(atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]]);
+        }
+      first_grain.push_back(grains.size());
+    }
   }
 };
 

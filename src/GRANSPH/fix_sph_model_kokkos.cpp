@@ -43,20 +43,21 @@ template <class DeviceType> struct DeviceGrainRows {
   KOKKOS_INLINE_FUNCTION double mass(int k) const { return use_rmass ? rmass(k) : type_mass(type(k)); }
 };
 
-// One predictor or corrector step of every granular particle
+// One predictor or corrector step of every granular particle of one material (with the
+// group bits `own` among the materials' `material_bits`: MaterialTable::holds)
 template <class DeviceType, class Model, GRANSPH::Stage STAGE, bool EXTRAPOLATE>
 struct StepFunctor {
   Model model;
   DeviceGrainRows<DeviceType> rows;
   typename GRANSPHCompat::KokkosTypes<DeviceType>::t_int_const mask;
-  int groupbit;
+  int groupbit, material_bits, own;
   double dt, ftm2v;
 
   // whether atom i is a grain that the corrector left with a bad state
   KOKKOS_INLINE_FUNCTION int step(const int i) const
   {
-    return (mask(i) & groupbit) ? GRANSPH::step_grain<STAGE, EXTRAPOLATE>(model, rows, i, dt, ftm2v)
-                                : 0;
+    const bool grain = (mask(i) & groupbit) && (mask(i) & material_bits) == own;
+    return grain ? GRANSPH::step_grain<STAGE, EXTRAPOLATE>(model, rows, i, dt, ftm2v) : 0;
   }
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const { step(i); }
 };
@@ -197,22 +198,29 @@ int FixSPHModelKokkos<DeviceType, Model>::step_on_device(GRANSPH::Stage stage)
   const ParticlePolicy<DeviceType> atoms(0, this->atom->nlocal, Kokkos::ChunkSize(256));
   int bad = 0;
   const auto run = [&](auto functor) {
+    int material_bad = 0;
     if (stage == GRANSPH::PREDICT)
       Kokkos::parallel_for(atoms, functor);    // no reduction, which would wait for a device
     else
-      Kokkos::parallel_reduce(atoms, CountingBadStates<decltype(functor)>{functor}, bad);
+      Kokkos::parallel_reduce(atoms, CountingBadStates<decltype(functor)>{functor}, material_bad);
+    bad += material_bad;
   };
   const bool extrapolate = this->predictor_extrapolated;
   using GRANSPH::CORRECT;
   using GRANSPH::PREDICT;
-  if (stage == PREDICT && extrapolate)
-    run(StepFunctor<DeviceType, Model, PREDICT, true>{this->model, rows, mask, groupbit, dt, ftm2v});
-  else if (stage == PREDICT)
-    run(StepFunctor<DeviceType, Model, PREDICT, false>{this->model, rows, mask, groupbit, dt, ftm2v});
-  else if (extrapolate)
-    run(StepFunctor<DeviceType, Model, CORRECT, true>{this->model, rows, mask, groupbit, dt, ftm2v});
-  else
-    run(StepFunctor<DeviceType, Model, CORRECT, false>{this->model, rows, mask, groupbit, dt, ftm2v});
+  const GRANSPH::MaterialTable &materials = this->materials;
+  for (int k = 0; k < materials.n; ++k) {
+    const Model &model = this->models[k];
+    const int any = materials.any_bits, own = materials.bits[k];
+    if (stage == PREDICT && extrapolate)
+      run(StepFunctor<DeviceType, Model, PREDICT, true>{model, rows, mask, groupbit, any, own, dt, ftm2v});
+    else if (stage == PREDICT)
+      run(StepFunctor<DeviceType, Model, PREDICT, false>{model, rows, mask, groupbit, any, own, dt, ftm2v});
+    else if (extrapolate)
+      run(StepFunctor<DeviceType, Model, CORRECT, true>{model, rows, mask, groupbit, any, own, dt, ftm2v});
+    else
+      run(StepFunctor<DeviceType, Model, CORRECT, false>{model, rows, mask, groupbit, any, own, dt, ftm2v});
+  }
 
   atomKK->modified(this->execution_space, this->datamask_modify);
   k_state.template modify<DeviceType>();
@@ -243,13 +251,19 @@ void FixSPHModelKokkos<DeviceType, Model>::cfl_maxima(double *local)
         if (a2 > amax2) amax2 = a2;
       },
       Kokkos::Max<double>(local[0]));
-  if (!this->cfl_sound_reference)    // a parallel region of its own, needed by local only
+  if (this->cfl_sound_reference) return;
+  // a parallel region of its own per material, needed by local only
+  const int any = this->materials.any_bits;
+  for (int k = 0; k < this->materials.n; ++k) {
+    const int own = this->materials.bits[k];
     Kokkos::parallel_reduce(
         Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
         LAMMPS_LAMBDA(const int i, double &most) {
-          if ((mask(i) & groupbit) && -state(i, FSI::RHO) > most) most = -state(i, FSI::RHO);
+          const bool grain = (mask(i) & groupbit) && (mask(i) & any) == own;
+          if (grain && -state(i, FSI::RHO) > most) most = -state(i, FSI::RHO);
         },
-        Kokkos::Max<double>(local[1]));
+        Kokkos::Max<double>(local[1 + k]));
+  }
 }
 
 // The per-atom output is read on the host: bring it there on output steps only.

@@ -151,6 +151,8 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
   const WendlandC2Of<Real> kernel = p.kernel.template in_precision<Real>();
   const Viscosity viscosity = p.visc;
   const Real cutsq = kernel.cutsq(), h = kernel.h;
+  // the grain's own friction, that of walls with the friction of the grains' materials
+  const Real mu_i = FRICTION ? Real(p.friction(i)) : Real(0);
 
   Real drho = 0, ax = 0, ay = 0, az = 0;
   // grad_v[a][b] = dv_a/dx_b
@@ -205,7 +207,8 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     bool limited = false, slip = false;
     Real nx = 0, ny = 0, nz = 0;
     if (FRICTION) {
-      const Real mu = p.friction(j);
+      const Real mu_j = p.friction(j);
+      const Real mu = mu_j == Real(FrictionWall::MATERIAL) ? mu_i : mu_j;
       limited = dummy && mu >= 0;
       slip = limited && mu == 0;
       nx = limited ? Real(p.normal(j, 0)) : Real(0);
@@ -651,8 +654,9 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
   const WendlandC2 kernel = p.kernel;
   const Viscosity viscosity = p.visc;
   const double cutsq = kernel.cutsq();
+  // the dummy's friction, or with the friction of the grains' materials each grain's own
   const double mu_d = FRICTION ? p.friction(d) : -1.0;
-  const bool limited = mu_d >= 0.0;
+  const bool of_grains = mu_d == FrictionWall::MATERIAL, limited = mu_d >= 0.0 || of_grains;
   const double nx = limited ? p.normal(d, 0) : 0.0, ny = limited ? p.normal(d, 1) : 0.0,
                nz = limited ? p.normal(d, 2) : 0.0;
   double fx = 0.0, fy = 0.0, fz = 0.0;
@@ -680,7 +684,8 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
     double fdz = mm * stress_gradient(sxz, syz, szz, inv_rho_ij, visc, gwx, gwy, gwz, gwz);
     if (FRICTION) {
       const bool slides = limited && p.slide(j, 0) < 1.0;
-      const double fn = fdx * nx + fdy * ny + fdz * nz, mu_fn = mu_d * fn;
+      const double mu = of_grains ? p.friction(j) : mu_d;
+      const double fn = fdx * nx + fdy * ny + fdz * nz, mu_fn = mu * fn;
       fdx = slides ? fn * nx + mu_fn * p.slide(j, 1) : fdx;
       fdy = slides ? fn * ny + mu_fn * p.slide(j, 2) : fdy;
       fdz = slides ? fn * nz + mu_fn * p.slide(j, 3) : fdz;

@@ -18,6 +18,7 @@
 #ifndef LMP_GRANSPH_PAIR_PASSES_H
 #define LMP_GRANSPH_PAIR_PASSES_H
 
+#include "gransph_materials.h"
 #include "gransph_neighbour_sums.h"
 #include "gransph_pair_settings.h"
 #include "gransph_state.h"
@@ -76,16 +77,20 @@ template <class Atoms, class Particle, class Records> struct ParticlesOf : SumOp
   }
 };
 
-// The pair data of an atom: a grain's or a dummy particle's (sph), or, for an atom that is
-// neither, a massless one (the neighbour sums read it, and add nothing from it)
+// The pair data of atom i with group bits `mask`: a grain's or a dummy particle's (in
+// sphbits), with the sound speed of its material (a dummy particle's: the integrator's
+// own), or, for an atom that is neither, a massless one (the neighbour sums read it, and
+// add nothing from it)
 template <class State>
-KOKKOS_INLINE_FUNCTION PairParticle pair_particle(bool sph, const State &state, int i,
-                                                  const double *x, const double *v, double mass,
-                                                  const Viscosity &visc, double E)
+KOKKOS_INLINE_FUNCTION PairParticle pair_particle(int mask, int sphbits, const State &state,
+                                                  int i, const double *x, const double *v,
+                                                  double mass, const Viscosity &visc,
+                                                  const MaterialTable &materials)
 {
-  if (!sph) return PairParticle::make(x, v, 0.0, 1.0, Sym3::zero(), 0.0);
+  if (!(mask & sphbits)) return PairParticle::make(x, v, 0.0, 1.0, Sym3::zero(), 0.0);
   const double rho = state.rho(i);
-  return PairParticle::make(x, v, mass, rho, state.sigma(i), visc.sound_speed(E, rho));
+  return PairParticle::make(x, v, mass, rho, state.sigma(i),
+                            materials.viscosity_sound(visc, materials.of(mask), rho));
 }
 
 // A grain's spacing as its volume m / rho0 gives it, in dim dimensions

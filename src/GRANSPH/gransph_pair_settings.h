@@ -30,15 +30,6 @@ class LAMMPS;
 
 namespace GRANSPH {
 
-// A dummy group with a friction of its own (wall/friction GROUP value): its dummies limit
-// the grains' tangential force at mu times the normal one, mu = tan(delta) (0: slip);
-// MATERIAL: the slide friction of the integrator's model; ROUGH: as the sand.
-struct FrictionWall {
-  static constexpr double ROUGH = -1.0, MATERIAL = -2.0;
-  int group;    // an index into LAMMPS' groups
-  double mu;
-};
-
 struct PairSettings {
   static constexpr int MAX_FRICTION_WALLS = 32;    // LAMMPS' number of groups
   // defaults: viscosity from the convergence study (doc/pair_sph_granular.rst), prune by

@@ -34,13 +34,7 @@ struct Viscosity {
   enum Sound { PAPER, BULK };    // c = sqrt(E / rho) (eq. 19), or c0 = sqrt(K / rho0)
   double alpha, beta;
   bool walls;
-  Sound sound;
-  double c0;    // sqrt(K / rho0) of the material
-
-  KOKKOS_INLINE_FUNCTION double sound_speed(double E, double rho) const
-  {
-    return sound == BULK ? c0 : GRANSPH::sound_speed(E, rho);
-  }
+  Sound sound;    // of each particle's material (MaterialTable::viscosity_sound)
 };
 
 // What a particle brings to its pair interactions, set once per evaluation so
@@ -234,6 +228,15 @@ struct WallVelocitySums {
       for (int b = 0; b < 3; ++b) r.grad_v[a][b] += gn * n[b];
     }
   }
+};
+
+// A dummy group with a friction of its own (wall/friction GROUP value): its dummies limit
+// the grains' tangential force at mu times the normal one, mu = tan(delta) (0: slip);
+// MATERIAL: the slide friction of each grain's material model; ROUGH: as the sand.
+struct FrictionWall {
+  static constexpr double ROUGH = -1.0, MATERIAL = -2.0;
+  int group;    // an index into LAMMPS' groups
+  double mu;
 };
 
 // Walls with a friction of their own (pair_style keyword wall/friction): Coulomb's law

@@ -12,6 +12,7 @@
 #include "lammpsplugin.h"
 #include "version.h"
 
+#include "compute_sph_material_atom.h"
 #include "compute_sph_runout.h"
 #include "compute_sph_stress_atom.h"
 #include "compute_sph_visc_atom.h"
@@ -117,6 +118,9 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   register_style(reg, lmp, handle, "compute", "sph/visc/atom",
                  "GRANSPH: per-atom pressure of the artificial viscosity",
                  (void *) &compute_creator<ComputeSPHViscAtom>, true);
+  register_style(reg, lmp, handle, "compute", "sph/material/atom",
+                 "GRANSPH: per-atom material of the grains",
+                 (void *) &compute_creator<ComputeSPHMaterialAtom>, true);
   register_style(reg, lmp, handle, "compute", "sph/runout",
                  "GRANSPH: deposit edge, skirt and height from the thickness profile",
                  (void *) &compute_creator<ComputeSPHRunout>, true);

@@ -74,7 +74,7 @@ using HostParticles = GRANSPH::ParticlesOf<HostAtoms, PairParticle, const PairPa
 /* ---------------------------------------------------------------------- */
 
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
-    Pair(lmp), c0(0.0), warned_far_from_origin(false), integrator(nullptr), normals_fix(nullptr), pruned_nall(-1),
+    Pair(lmp), warned_far_from_origin(false), integrator(nullptr), normals_fix(nullptr), pruned_nall(-1),
     viscous_pressure_step(-1), viscous_pressure_nlocal(0), nmax(0),
     particles(nullptr),
     particles_single(nullptr), normals(nullptr), friction(nullptr), slide(nullptr)
@@ -227,7 +227,8 @@ void PairSPHGranular::check_wall_spacing()
   for (int i = 0; i < atom->nlocal; ++i) {
     if (mask[i] & integrator->groupbit) {
       const double m = atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
-      local[GRAIN_SPACINGS] += GRANSPH::grain_spacing(m, integrator->material.rho0, domain->dimension);
+      const double rho0 = integrator->materials.rho0[integrator->materials.of(mask[i])];
+      local[GRAIN_SPACINGS] += GRANSPH::grain_spacing(m, rho0, domain->dimension);
       local[GRAIN_COUNT] += 1.0;
     }
     if (!(mask[i] & wallbit)) continue;
@@ -437,21 +438,24 @@ void PairSPHGranular::grow(int n)
 }
 
 // The friction coefficient mu of atoms [0, n) into `out`: that of the last wall/friction
-// entry whose group holds the dummy particle, -1 for rough walls and the others. Returns
-// an owned dummy of a wall with a friction of its own that has no normal (`normals`, as
-// pack_wall_normals writes them; the friction is taken against it), or -1.
+// entry whose group holds the dummy particle, -1 for rough walls and the others; a grain's
+// that of its material (friction_of). Returns an owned dummy of a wall with a friction of
+// its own that has no normal (`normals`, as pack_wall_normals writes them; the friction
+// is taken against it), or -1.
 int PairSPHGranular::pack_wall_friction(double *out, const double *unit_normals, int n) const
 {
-  const int *mask = atom->mask, wallbit = integrator->wallbit;
+  const int *mask = atom->mask, wallbit = integrator->wallbit, grainbit = integrator->groupbit;
+  const GRANSPH::MaterialTable &materials = integrator->materials;
   int missing = -1;
   for (int i = 0; i < n; ++i) {
-    out[i] = -1.0;
+    out[i] = (mask[i] & grainbit) ? materials.slide_friction[materials.of(mask[i])] : -1.0;
     if (!(mask[i] & wallbit)) continue;
     for (int k = 0; k < config.nfriction; ++k)
       if (mask[i] & group->bitmask[config.friction[k].group])
         out[i] = friction_of(config.friction[k]);
     const double *ni = &unit_normals[3 * i];
-    if (out[i] >= 0.0 && ni[0] == 0.0 && ni[1] == 0.0 && ni[2] == 0.0 && missing < 0 &&
+    const bool limits = out[i] >= 0.0 || out[i] == GRANSPH::FrictionWall::MATERIAL;
+    if (limits && ni[0] == 0.0 && ni[1] == 0.0 && ni[2] == 0.0 && missing < 0 &&
         i < atom->nlocal)
       missing = i;
   }
@@ -528,12 +532,11 @@ void PairSPHGranular::pack_particles(int from, int to)
   const FixSPHIntegrate &fix = *integrator;
   const FixSPHIntegrate::HostState state = fix.host_state();
   const int sphbits = fix.groupbit | fix.wallbit;
-  const double E = fix.material.E;
   const GRANSPH::Viscosity visc = viscosity();
   for (int i = from; i < to; ++i)
     particles[i] = GRANSPH::pair_particle(
-        atom->mask[i] & sphbits, state, i, atom->x[i], atom->v[i],
-        atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]], visc, E);
+        atom->mask[i], sphbits, state, i, atom->x[i], atom->v[i],
+        atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]], visc, fix.materials);
 }
 
 // the single-precision copy of atoms [0, n) for the grains' sums, with the dummies'
@@ -587,15 +590,21 @@ void PairSPHGranular::settings(int narg, char **arg)
   config = GRANSPH::PairSettings::parse(lmp, narg, arg);
 }
 
-// the friction coefficient of a wall with a friction of its own (-1 for a rough one)
+// the friction coefficient of a wall with a friction of its own (-1 for a rough one); for
+// a wall with the grains' friction, that of their material, or with materials of other
+// frictions FrictionWall::MATERIAL: each grain's own (pack_wall_friction)
 double PairSPHGranular::friction_of(const GRANSPH::FrictionWall &w) const
 {
-  return w.mu == GRANSPH::FrictionWall::MATERIAL ? integrator->slide_friction() : w.mu;
+  if (w.mu != GRANSPH::FrictionWall::MATERIAL) return w.mu;
+  const GRANSPH::MaterialTable &materials = integrator->materials;
+  for (int k = 1; k < materials.n; ++k)
+    if (materials.slide_friction[k] != materials.slide_friction[0]) return w.mu;
+  return materials.slide_friction[0];
 }
 
 GRANSPH::Viscosity PairSPHGranular::viscosity() const
 {
-  return {config.visc_alpha, config.visc_beta, config.visc_walls, config.visc_sound, c0};
+  return {config.visc_alpha, config.visc_beta, config.visc_walls, config.visc_sound};
 }
 
 GRANSPH::SumOptions PairSPHGranular::sum_options(bool limited) const
@@ -643,7 +652,6 @@ void PairSPHGranular::init_style()
   if (!comm->ghost_velocity)
     error->all(FLERR, "Pair style sph/granular needs ghost velocities: use comm_modify vel yes");
   integrator = &FixSPHIntegrate::find(lmp, "Pair style sph/granular");
-  c0 = sqrt(integrator->material.bulk_modulus() / integrator->material.rho0);
   find_wall_normals();
   for (int k = 0; k < config.nfriction; ++k) {
     const int igroup = config.friction[k].group;

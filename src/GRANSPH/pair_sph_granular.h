@@ -50,7 +50,6 @@ class PairSPHGranular : public Pair {
 
  protected:
   GRANSPH::PairSettings config;    // parsed from the defaults by each pair_style command
-  double c0;                         // the viscosity's sqrt(K / rho0) of the material
   bool warned_far_from_origin;       // of single-precision positions, once
   FixSPHIntegrate *integrator;
   const FixSPHNormals *normals_fix;    // the dummies' own normals, or nullptr (init_style)

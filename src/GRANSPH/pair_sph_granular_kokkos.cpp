@@ -257,14 +257,14 @@ double PairSPHGranularKokkos<DeviceType>::pack_particles(int from, int to, bool 
   const auto state = state_kk->template state_on<DeviceType>();
   const int sphbits = integrator->groupbit | integrator->wallbit;
   const int use_rmass = atom->rmass != nullptr;
-  const double E = integrator->material.E;
+  const GRANSPH::MaterialTable materials = integrator->materials;
   const GRANSPH::Viscosity visc = viscosity();
   const auto pack = LAMMPS_LAMBDA(const int i)
   {
     const double xi[3] = {x(i, 0), x(i, 1), x(i, 2)};
     const double vi[3] = {v(i, 0), v(i, 1), v(i, 2)};
-    particles(i) = GRANSPH::pair_particle(mask(i) & sphbits, state, i, xi, vi,
-                                          use_rmass ? rmass(i) : mass(type(i)), visc, E);
+    particles(i) = GRANSPH::pair_particle(mask(i), sphbits, state, i, xi, vi,
+                                          use_rmass ? rmass(i) : mass(type(i)), visc, materials);
   };
   const Kokkos::RangePolicy<DeviceType> atoms(from, to);
   if (!since_pruned) {    // no reduction, which would wait for a device

@@ -130,6 +130,42 @@ CASES = [
      r"material file .*short.gransph, material Short: 10 fields instead of 11 on line: Short 2450"),
 ]
 
+# several materials (keyword material GROUP FILE NAME): groups of the sand block's upper
+# grains (up: z > 0.02, hi: z > 0.03) and of its lowest grains and the floor (low)
+MATERIAL_GROUPS = """region up block INF INF INF INF 0.02 INF units box
+group up region up
+region hi block INF INF INF INF 0.03 INF units box
+group hi region hi
+region low block INF INF INF INF INF 0.01 units box
+group low region low
+"""
+SPH = "fix sph sand sph/elastoplastic sand.gransph Chen2019 walls floor "
+CASES += [
+    ("a grain claimed by two materials",
+     dict(fix=MATERIAL_GROUPS + SPH + "material up sand.gransph Chen2019 material hi {sand25} Sand25"),
+     r"grain \d+ is claimed by two materials, by the groups up \(Chen2019\) hi \(Sand25\)"),
+    ("a material group over the walls",
+     dict(fix=MATERIAL_GROUPS + SPH + "material low {sand25} Sand25"),
+     r"dummy particle \d+ of the walls group is in the material group low \(Sand25\)"),
+    ("materials of other units", dict(fix=MATERIAL_GROUPS + SPH + "material up {nounits} Plain"),
+     r"material file .*nounits.gransph declares no units .*, the fix's material file sand.gransph "
+     r"units si: the materials of a run must declare the same units"),
+    ("an unknown material", dict(fix=MATERIAL_GROUPS + SPH + "material up sand.gransph Nosuch"),
+     "material Nosuch not found in file sand.gransph"),
+    ("a material of no group", dict(fix=MATERIAL_GROUPS + SPH + "material nosuch sand.gransph Chen2019"),
+     "material group nosuch does not exist"),
+    ("a material for the fix group", dict(fix=MATERIAL_GROUPS + SPH + "material sand {sand25} Sand25"),
+     "material group sand holds every grain"),
+    ("a group given two materials",
+     dict(fix=MATERIAL_GROUPS + SPH + "material up {sand25} Sand25 material up sand.gransph Chen2019"),
+     "group up is given two materials, Sand25 and Chen2019"),
+    ("material without a name", dict(fix=MATERIAL_GROUPS + SPH + "material up sand.gransph"),
+     "keyword material needs a group, a material file and a name"),
+    ("geostatic with several materials",
+     dict(fix=MATERIAL_GROUPS + SPH + "material up {sand25} Sand25 geostatic 0.05"),
+     "geostatic takes one density and is for one material, not 2"),
+]
+
 # fix sph/normals: its keywords and the files it reads ({name} is tmp/name.normals); the
 # sand block's grains are atoms 1-125, its floor 126-200
 NORMALS_FILES = {"nosection": "Atoms\n\n126 2 0 0 0\n",
@@ -225,8 +261,10 @@ MOVE_2D = gransph_run.EMPTY_2D_BOX + "fix move all sph/move 0 1 1\n"
 
 def run_case(tmp, fields, args=()):
     text = BASE.format(**{**GOOD, **fields})
-    for name in ("bad", "long", "short"):
+    for name in ("bad", "long", "short", "nounits"):
         text = text.replace("{" + name + "}", os.path.join(tmp, name + ".gransph"))
+    text = text.replace("{sand25}", os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                 "sand25.gransph"))
     for name in NORMALS_FILES:
         text = text.replace("{" + name + "}", os.path.join(tmp, name + ".normals"))
     return gransph_run.first_error(tmp, text, args)
@@ -244,6 +282,8 @@ with tempfile.TemporaryDirectory() as tmp:
         f.write("# UNITS: si\n" + good + "Long 2450 20e6 0.3 37 0 0 1500 1.1 0.6 0.8 9\n")
     with open(os.path.join(tmp, "short.gransph"), "w") as f:
         f.write("# UNITS: si\n" + good + "Short 2450 20e6 0.3 37 0 0 1500 1.1 0.6\n" + good)
+    with open(os.path.join(tmp, "nounits.gransph"), "w") as f:
+        f.write("# a material file without a UNITS: tag\nPlain 2450 20e6 0.3 37 0 0 1500 1.1 0.6 0.8\n")
     code, error = run_case(tmp, {})
     check("good input runs", code == 0 and not error, error or "no error")
     # the viscous pressure is summed on the steps its output asks for, and only there
