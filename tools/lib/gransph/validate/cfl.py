@@ -265,9 +265,7 @@ def cfl_wave(args, report):
         ax.set_ylabel("error / amplitude")
         ax.set_title(f"elastic wave (dashed: unstable within {WAVE_LONG:g} s)", fontsize=9)
         ax.legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(args.runner.out("cfl", args.cfl_report + "_wave.png"), dpi=120)
-        report.append(f"![wave errors]({args.cfl_report}_wave.png)\n")
+        report.figure(fig, args.runner, "cfl", args.cfl_report + "_wave.png", "wave errors")
     return rows, limit
 
 
@@ -389,9 +387,8 @@ def cfl_flume(args, report):
     ax.set_ylabel("normal force on the wall (N)")
     ax.set_title(f"flume impact, dx = {dx} m, {model}", fontsize=9)
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(args.runner.out("cfl", args.cfl_report + "_flume.png"), dpi=120)
-    report.append(f"\n![force histories]({args.cfl_report}_flume.png)\n")
+    report.figure(fig, args.runner, "cfl", args.cfl_report + "_flume.png", "force histories",
+                  before="\n")
     return rows
 
 

@@ -7,6 +7,8 @@ import math
 
 import matplotlib.pyplot as plt
 
+from .report import save_figure
+
 EDGE_THRESHOLD = 0.025      # the example's deposit edge: thickness 2.5% of r0
 EDGE_WINDOW = 0.1           # the example's window for the edge (in r0, fixed in the
                             # problem's units), also the profiles'
@@ -40,8 +42,7 @@ def deposit_picture(dump, png, title):
     ax.set_ylabel("z (m)")
     ax.set_title(f"deposit at rest, {title}")
     ax.set_aspect("equal")
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    save_figure(fig, png)
 
 
 def last_snapshot(dump):
@@ -173,5 +174,4 @@ def front_profiles(a, model, rows, png, r0, plane=False):
     ax.set_title(f"deposit front, a = {a}, {model}" + (", plane strain" if plane else "") +
                  f", {'strips' if plane else 'annuli'} {EDGE_WINDOW:g} r0 wide", fontsize=9)
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    save_figure(fig, png)

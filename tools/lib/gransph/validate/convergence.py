@@ -105,9 +105,7 @@ def convergence(args, report):
         ax.set_xlabel("particles per radius r0/dx")
         ax.set_ylabel("(r - r0)/r0")
         ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(args.runner.out("convergence", f"convergence{args.suffix}.png"), dpi=120)
-    report.append(f"![convergence](convergence{args.suffix}.png)\n")
+    report.figure(fig, args.runner, "convergence", f"convergence{args.suffix}.png", "convergence")
     report.append("| case | converged | verdict |")
     report.append("|---|---|---|")
     report += verdicts

@@ -58,6 +58,5 @@ def flume_convergence(args, report):
         ax.set_xlabel("t (s)")
         ax.set_ylabel("normal force on the wall (N)")
         ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(args.runner.out("flume", f"flume_convergence{args.suffix}.png"), dpi=120)
-    report.append(f"![force histories](flume_convergence{args.suffix}.png)\n")
+    report.figure(fig, args.runner, "flume", f"flume_convergence{args.suffix}.png",
+                  "force histories")

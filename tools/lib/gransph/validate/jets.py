@@ -7,6 +7,7 @@ import os
 import matplotlib.pyplot as plt
 
 from .common import number_after
+from .report import save_figure
 
 
 def jet_collision(args, report):
@@ -30,8 +31,7 @@ def jet_collision(args, report):
     ax.set_xlabel("k (radius ratio)")
     ax.set_ylabel("u0 (m/s)")
     ax.legend()
-    fig.tight_layout()
-    fig.savefig(args.runner.out("paper", "u0_vs_k.png"), dpi=120)
+    save_figure(fig, args.runner.out("paper", "u0_vs_k.png"))
     report.append("## 3. Head-on collisions of granular jets (section 5.3)\n")
     report.append("The dissipation is the loss of the jets' kinetic energy per unit time between "
                   "t1 and t2, and its fraction of the kinetic energy the two jets bring to the "
@@ -74,8 +74,7 @@ def jet_film(args, report):
     ax.set_xlabel("f0 (Hz)")
     ax.set_ylabel("wavelength (m)")
     ax.legend()
-    fig.tight_layout()
-    fig.savefig(args.runner.out("paper", "wavelength_vs_f0.png"), dpi=120)
+    save_figure(fig, args.runner.out("paper", "wavelength_vs_f0.png"))
     report.append("## 4. Wavy granular jet on a granular film (section 5.4)\n")
     report.append(f"Jet speed 4 m/s, dx = {dx} m. The wavelength is measured on the falling jet "
                   "(zero crossings of its centre line); the paper shows pictures, no numbers.\n")

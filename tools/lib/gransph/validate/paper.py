@@ -8,6 +8,7 @@ import matplotlib.pyplot as plt
 from ..measures import force_history
 from .collapse import deposit_picture, lube, lube_height
 from .common import number_after
+from .report import save_figure
 
 
 def column_collapse(args, report):
@@ -61,8 +62,7 @@ def column_collapse(args, report):
     ax.set_xlabel("a = h0/r0")
     ax.set_ylabel("(r_inf - r0)/r0")
     ax.legend()
-    fig.tight_layout()
-    fig.savefig(args.runner.out("paper", "runout.png"), dpi=120)
+    save_figure(fig, args.runner.out("paper", "runout.png"))
     report.append("\n![runout](paper/runout.png) ![mobilised strength](paper/mobilised.png)\n")
     report.append("Where we differ: the spacings are several times the paper's (see dx); the "
                   "runout is the deposit edge of compute sph/runout rather than the outermost "
@@ -89,8 +89,7 @@ def flume_impact(args, report):
     ax.set_xlabel("t (s)")
     ax.set_ylabel("normal force on the wall (N)")
     ax.legend()
-    fig.tight_layout()
-    fig.savefig(args.runner.out("paper", "impact_force.png"), dpi=120)
+    save_figure(fig, args.runner.out("paper", "impact_force.png"))
     report.append("## 2. Sand impact on a wall at the foot of a 45-degree flume (section 5.2)\n")
     report.append("| model | peak force (N) | at t (s) | first impact (s) | paper peak (N) | paper first impact (s) |")
     report.append("|---|---|---|---|---|---|")

@@ -70,10 +70,9 @@ def sphere_impact(args, report):
     ax.set_xlabel("H = h + d (m)")
     ax.set_ylabel("d (mm)")
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(args.runner.out("sphere_impact", f"sphere_impact{args.suffix}.png"), dpi=120)
+    report.figure(fig, args.runner, "sphere_impact", f"sphere_impact{args.suffix}.png",
+                  "d against H", before="\n")
     plt.close(fig)
-    report.append(f"\n![d against H](sphere_impact{args.suffix}.png)\n")
 
     def changes(a, b):    # relative change of d from a to b at each height
         return [abs(depths[b + (h,)][1] / depths[a + (h,)][1] - 1) for h in args.heights]
