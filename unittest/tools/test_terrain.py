@@ -1,16 +1,15 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
-"""tools/terrain: dummy layers beneath a terrain surface.
+"""tools/terrain: dummy layers beneath a terrain surface (its module gransph.terrain, and the
+command line through the launcher).
 
-  /usr/bin/python3 unittest/tools/test_terrain.py                  # everything
-  /usr/bin/python3 unittest/tools/test_terrain.py TestLammpsRead   # LAMMPS reads the normals
+  PYTHONPATH=tools/lib /usr/bin/python3 unittest/tools/test_terrain.py                 # everything
+  PYTHONPATH=tools/lib /usr/bin/python3 unittest/tools/test_terrain.py TestLammpsRead  # LAMMPS reads the normals
 
 Every check runs or fails: a missing reader (python3-gdal, python3-stl) or a missing LAMMPS
 is an error here, not a skip. TestLammpsRead needs neither reader (it builds its surface
 from numpy).
 """
-import importlib.machinery
-import importlib.util
 import math
 import os
 import subprocess
@@ -21,14 +20,11 @@ import warnings
 
 import numpy as np
 
+from gransph import terrain
+
 TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 TOOL = os.path.join(TOP, "tools", "terrain")
 LMP = os.path.join(TOP, "tools", "lmp")
-
-_loader = importlib.machinery.SourceFileLoader("terrain", TOOL)
-_spec = importlib.util.spec_from_loader("terrain", _loader)
-terrain = importlib.util.module_from_spec(_spec)
-_loader.exec_module(terrain)
 
 
 def run_tool(*args):
