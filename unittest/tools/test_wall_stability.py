@@ -8,20 +8,17 @@ rests on, for a monolayer on a 20-degree slope, 8 columns, dx 0.02:
   stress ratio tan(theta), as the wall rule means them to;
 - wall/stress paper is neutral, wall/stress ratio grows (the styles' known limit), and
   the adjoint and frozen designs together are neutral again.
+
+The module is gransph.wall_stability (ctest runs this with tools/lib on PYTHONPATH, as the
+launcher tools/research/wall-stability does):
+
+  PYTHONPATH=tools/lib /usr/bin/python3 unittest/tools/test_wall_stability.py
 """
 import argparse
-import importlib.machinery
-import importlib.util
 import math
-import os
 import unittest
 
-TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-_loader = importlib.machinery.SourceFileLoader("wall_stability",
-                                               os.path.join(TOP, "tools", "research", "wall-stability"))
-_spec = importlib.util.spec_from_loader("wall_stability", _loader)
-wall_stability = importlib.util.module_from_spec(_spec)
-_loader.exec_module(wall_stability)
+from gransph import wall_stability
 
 THETA = 20.0
 NEUTRAL = 1.0      # 1/s: below this a mode does not grow within any run (5e-5 per step)
