@@ -283,7 +283,7 @@ with tempfile.TemporaryDirectory() as tmp:
     with open(os.path.join(tmp, "short.gransph"), "w") as f:
         f.write("# UNITS: si\n" + good + "Short 2450 20e6 0.3 37 0 0 1500 1.1 0.6\n" + good)
     with open(os.path.join(tmp, "nounits.gransph"), "w") as f:
-        f.write("# a material file without a UNITS: tag\nPlain 2450 20e6 0.3 37 0 0 1500 1.1 0.6 0.8\n")
+        f.write("# a material file that declares no units\nPlain 2450 20e6 0.3 37 0 0 1500 1.1 0.6 0.8\n")
     code, error = run_case(tmp, {})
     check("good input runs", code == 0 and not error, error or "no error")
     # the viscous pressure is summed on the steps its output asks for, and only there
