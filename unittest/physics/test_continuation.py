@@ -5,7 +5,8 @@ same positions, velocities, density and stress to round-off (1e-12 of the larges
 value of each), for both integrator fixes (and with the extrapolated predictor, which
 keeps the rates of the last two steps, and with the grains' sums in single precision:
 to 1e-12 with the pair style's rows unpruned, to single precision's round-off pruned),
-on 1 and 2 MPI ranks, with the CFL
+with a second material for the upper half of the block (a grain's material comes back
+from the restart file with its group), on 1 and 2 MPI ranks, with the CFL
 timestep and a wall whose velocity changes every step. What invalidates the rates
 of the last step is recomputed and said in the log; a grain created between two runs
 is stepped from the second run's first step. Arguments are passed to LAMMPS
@@ -41,17 +42,19 @@ def run(tmp, ranks, **variables):
 SETTINGS = [("elastoplastic", "", "", 1e-12), ("phasechange", "", "", 1e-12),
             ("elastoplastic", "predictor extrapolated", "", 1e-12),
             ("elastoplastic", "", "precision mixed prune 0", 1e-12),
-            ("elastoplastic", "", "precision mixed", 1e-5)]
+            ("elastoplastic", "", "precision mixed", 1e-5),
+            ("phasechange", f"material top {os.path.join(HERE, 'sand25.gransph')} Sand25", "", 1e-12)]
 
 with tempfile.TemporaryDirectory() as tmp:
     for model, options, pair_options, tolerance in SETTINGS:
         for ranks in (1, 2):
-            name = ", ".join([model] + [o for o in (options, pair_options) if o]
+            name = ", ".join([model] + [o.replace(HERE + "/", "") for o in (options, pair_options) if o]
                              + [f"{ranks} rank{'s' if ranks > 1 else ''}"])
 
-            def run_case(mode):
+            def run_case(mode):    # several materials start stress-free (no geostatic)
                 return run(tmp, ranks, model=model, fix_options=options,
-                           pair_options=pair_options, mode=mode)
+                           pair_options=pair_options, mode=mode,
+                           geostatic=0 if "material" in options else 0.08)
 
             out, straight = run_case(mode=0)
             check(f"{name}: something happens",
