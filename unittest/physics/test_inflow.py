@@ -8,7 +8,8 @@ the same lattice are in. Checked: the counts; every layer is v (t - t_k) in
 front of the nozzle (so consecutive layers are dx apart) within 1e-6 dx, also
 across a change of timestep; a restarted run ends as the uninterrupted one; the jet moves at v along n; with
 `wave`, the centre of layer k is A0 sin(2 pi f0 t_k) off the nozzle axis; with
-`until`, no layer leaves after that time; bad input stops with an error that
+`until`, no layer leaves after that time; a jet of a material of its own is of that
+material and starts at its density; bad input stops with an error that
 names the problem."""
 
 import math
@@ -88,6 +89,14 @@ with tempfile.TemporaryDirectory() as tmp:
     # oblique jet, CFL timestep
     counts, d = run(tmp, {"steps": 600})
     check_jet("oblique", counts, d, (-0.05, -0.05, -0.05), (1, 1, 1))
+    # a jet of a material of its own: the inflow's group is the material's
+    light = os.path.join(HERE, "light.gransph")
+    counts, d = run(tmp, {"steps": 600, "group": "sand", "jet_group": "bed",
+                          "fix_options": f"material bed {light} Light1500"})
+    check_jet("of a second material", counts, d, (-0.05, -0.05, -0.05), (1, 1, 1))
+    check("of a second material: its grains", np.all(d["c_material"] == 2)
+          and abs(np.mean(d["f_sph[1]"]) / 1500 - 1) < 0.01,
+          f"materials {sorted(set(d['c_material']))}, mean density {np.mean(d['f_sph[1]']):.1f} kg/m3 (1500)")
 
     # a fixed timestep changed between two runs, then the second run again from
     # the restart file written between them
