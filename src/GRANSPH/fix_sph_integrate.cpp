@@ -279,8 +279,9 @@ void FixSPHIntegrate::check_material_groups() const
     MPI_Allreduce(&first, &lowest, 1, MPI_LMP_TAGINT, MPI_MIN, world);
     if (lowest == MAXTAGINT) continue;
     const int i = atom->map(lowest);
+    // the owner's bits: the other ranks give 0
     int bits = (i >= 0 && i < atom->nlocal) ? mask[i] : 0, all_bits = 0;
-    MPI_Allreduce(&bits, &all_bits, 1, MPI_INT, MPI_BOR, world);
+    MPI_Allreduce(&bits, &all_bits, 1, MPI_INT, MPI_SUM, world);
     if (walls)
       error->all(FLERR, "Fix {}: dummy particle {} of the walls group is in the material group{}: "
                  "a material is for grains only", style, lowest, claims(all_bits));
