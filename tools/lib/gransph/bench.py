@@ -104,9 +104,9 @@ class Run:
         return (sum(int(n) for _, n, _ in loops),
                 float(times[-1]) / sum(float(seconds) for seconds, _, _ in loops))
 
-    def output(self, variables, steps, cwd=None):
-        """the screen output of one run, which must have timed a loop"""
-        cmd = [LMP, "-in", self.script, "-var", "steps", str(steps), "-log", "none",
+    def command(self, variables, steps, script=None):
+        """the command line of one run (of `script` in place of the configuration's own)"""
+        cmd = [LMP, "-in", script or self.script, "-var", "steps", str(steps), "-log", "none",
                "-echo", "none"] + self.flags
         if self.pair_options:
             variables = dict(variables, pair_options=self.pair_options)
@@ -114,8 +114,16 @@ class Run:
             cmd += ["-var", name, str(value)]
         if self.ranks > 1:
             cmd = ["mpirun", "-np", str(self.ranks), "--bind-to", "core"] + cmd
-        env = dict(ENV, **({"GRANSPH_BUILD": self.build} if self.build else {}))
-        out = subprocess.run(cmd, capture_output=True, text=True, env=env,
+        return cmd
+
+    def env(self):
+        """its environment: the plugin of its build"""
+        return dict(ENV, **({"GRANSPH_BUILD": self.build} if self.build else {}))
+
+    def output(self, variables, steps, cwd=None):
+        """the screen output of one run, which must have timed a loop"""
+        cmd = self.command(variables, steps)
+        out = subprocess.run(cmd, capture_output=True, text=True, env=self.env(),
                              cwd=cwd or os.path.dirname(self.script)).stdout
         if not LOOP.search(out):
             sys.exit(f"no timing from: {' '.join(cmd)}\n{out[-2000:]}")
