@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: GPL-2.0-only (GRANSPH: LICENSE)
 """GRANSPH's tools in Python: the shared LAMMPS runner (lammps), the measures a study
-and the GPU check take from a run (measures), the bench's cases (bench), the validation
-studies (validate), the GPU check (gpu_check), terrain surfaces into dummy layers
-(terrain) and the linear stability of a layer on a dummy floor (wall_stability).
+and the GPU check take from a run (measures), the bench's cases (bench) and its memory
+per particle (memory), the validation studies (validate), the GPU check (gpu_check),
+terrain surfaces into dummy layers (terrain) and the linear stability of a layer on a
+dummy floor (wall_stability).
 
 The commands are tools/terrain, tools/research/validate, tools/research/wall-stability,
 tools/gpu/gpu-check and bench/run_bench.py; each runs its module here

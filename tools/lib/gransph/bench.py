@@ -8,6 +8,7 @@ plugin of an earlier commit.
   bench/run_bench.py [--case column|flume|jet]... [--size S]... [--repeat N] [--steps N]
                      [--against REF [--against-arch as-built|native|generic]]
   bench/run_bench.py --flow [--case column|flume|jet]... [--tend T] [--repeat N] [--against REF]
+  bench/run_bench.py --memory [--size 7e5|3e6|1.5e6|1e5]... [--steps N] [--markdown FILE]
 
 Cases (the examples' own inputs, for a fixed number of steps):
   column  examples/column_collapse, a = 0.5 (a sand column on three layers of dummy
@@ -38,6 +39,12 @@ as simulated seconds per wall-clock second (LAMMPS' loop times, setup excluded).
 --against-arch: REF's plugin as its own CMakeLists builds it (as-built, default), or
 for this machine (native) or any x86-64 (generic), to tell a code change's gain from
 the instruction set's: e.g. --against HEAD --against-arch generic.
+--memory: bytes per particle rather than time: the column's max RSS on one rank
+(plain styles) at about 7e5 and 3e6 particles (--size: also 1.5e6, or 1e5 for a quick
+look), after --steps steps (default 5), less that of the same input at a coarse
+spacing, per particle, beside sph/taitwater's on the same lattice; also with a second
+run that continues the first, and LAMMPS' own estimate (tools/lib/gransph/memory.py).
+--markdown FILE writes its table in markdown too.
 """
 
 import argparse
@@ -255,14 +262,26 @@ def main():
     parser = argparse.ArgumentParser(prog="bench/run_bench.py", description=__doc__.split("\n")[0])
     parser.add_argument("--case", action="append", choices=list(SIZES))
     parser.add_argument("--size", action="append")
-    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--repeat", type=int)
     parser.add_argument("--steps", type=int)
     parser.add_argument("--flow", action="store_true")
     parser.add_argument("--tend", type=float)
     parser.add_argument("--against", metavar="REF")
     parser.add_argument("--against-arch", choices=["as-built", "native", "generic"],
                         default="as-built")
+    parser.add_argument("--memory", action="store_true")
+    parser.add_argument("--markdown", metavar="FILE")
     opts = parser.parse_args()
+    if opts.memory:
+        if opts.flow or opts.against or opts.tend or opts.repeat or set(opts.case or []) - {"column"}:
+            parser.error("--memory measures the column and its peer once each: no --flow, "
+                         "--tend, --against, --repeat or other --case")
+        from . import memory
+        memory.main(opts.size, opts.steps, opts.markdown)
+        return
+    if opts.markdown:
+        parser.error("--markdown goes with --memory")
+    opts.repeat = opts.repeat or 3
     if opts.flow and set(opts.case or []) - set(FLOWS):
         parser.error(f"--flow times the cases {', '.join(FLOWS)}")
     if opts.flow and (opts.size or opts.steps):
