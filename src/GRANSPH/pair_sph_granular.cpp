@@ -437,6 +437,20 @@ void PairSPHGranular::grow(int n)
   for (int k = 0; k < SLIDE * nmax; ++k) slide[k] = GRANSPH::WallFrictionSums::held(k);
 }
 
+// the per-atom records and the pruned rows (LAMMPS' list counts its own)
+double PairSPHGranular::memory_usage()
+{
+  double bytes = (double) nmax * sizeof(PairParticle);
+  if (particles_single) bytes += (double) nmax * sizeof(GRANSPH::PairParticleSingle);
+  if (normals) bytes += (double) nmax * 3 * sizeof(double);
+  if (friction) bytes += (double) nmax * (1 + SLIDE) * sizeof(double);
+  bytes += (double) visc_pressure.capacity() * sizeof(double);
+  bytes += (double) (pruned_index.capacity() + pruned_count.capacity()) * sizeof(int);
+  bytes += (double) pruned_first.capacity() * sizeof(int *);
+  bytes += (double) pruned_x.capacity() * sizeof(double);
+  return bytes;
+}
+
 // The friction coefficient mu of atoms [0, n) into `out`: that of the last wall/friction
 // entry whose group holds the dummy particle, -1 for rough walls and the others; a grain's
 // that of its material (friction_of). Returns an owned dummy of a wall with a friction of

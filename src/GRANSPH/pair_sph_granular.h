@@ -41,6 +41,7 @@ class PairSPHGranular : public Pair {
   void *extract(const char *, int &) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
+  double memory_usage() override;
 
   // The pressure the artificial viscosity adds at each owned atom (0 but at grains),
   // which compute sph/visc/atom reports: summed only in the evaluations of the steps

@@ -475,6 +475,16 @@ template <class DeviceType> const double *PairSPHGranularKokkos<DeviceType>::vis
   return k_visc_pressure.view_host().data();
 }
 
+// the per-atom records and the pruned rows where the twin keeps them (a DualView once)
+template <class DeviceType> double PairSPHGranularKokkos<DeviceType>::memory_usage()
+{
+  return d_particles.span() * sizeof(GRANSPH::PairParticle) +
+      d_particles_single.span() * sizeof(GRANSPH::PairParticleSingle) +
+      (k_normals.extent(0) + k_friction.extent(0) + k_slide.extent(0) +
+       k_visc_pressure.extent(0) + d_pruned_x.span()) * sizeof(double) +
+      (d_pruned.span() + d_pruned_count.span()) * sizeof(int);
+}
+
 namespace LAMMPS_NS {
 template class PairSPHGranularKokkos<LMPDeviceType>;
 #ifdef LMP_KOKKOS_GPU

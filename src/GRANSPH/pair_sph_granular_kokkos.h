@@ -30,6 +30,7 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   void compute(int, int) override;
   void init_style() override;
   const double *viscous_pressure() override;
+  double memory_usage() override;
   // how the grains slide on walls with a friction of their own, to the ghosts: on the
   // device, or through the host when comm/kokkos takes the classic path
   double *slide_on_host() override
