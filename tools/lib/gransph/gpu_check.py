@@ -11,9 +11,11 @@ On the GPU machine (the device tool: run(command="tools/gpu/gpu-check", carry=["
      GPU, JIT-compiling) the device code;
   3. a short GPU run under compute-sanitizer memcheck (reported);
   4. every case of ctest Kokkos:equal_to_plain (the column collapse at dx 0.02 with each
-     wall treatment and option, the jet's phase change), the flume (3 cm, 200 steps) and
+     wall treatment and option, the jet's phase change), the flume (3 cm, 200 steps),
      the landslide (a terrain with its own normals, the site from the bundle's site/)
-     with `-k on g 1 -sf kk` and with the plain styles on one CPU core, compared per atom
+     and the erodible bed (examples/erodible_bed: two materials, the column's and the
+     bed's, in one run; 300 steps) with `-k on g 1 -sf kk` and with the plain styles on
+     one CPU core, compared per atom
      (positions, velocities, density, stress, compute sph/stress/atom) to TOLERANCE;
   5. `-k on g 1 -sf kk` timed on the column at about 1e5, 1e6 and 4e6 particles and on the
      bench's flume and jet: particle-steps per second from LAMMPS' loop time, and its
@@ -93,6 +95,9 @@ FLUME_COMPARE = {"dx": 0.03, "model": "elastoplastic", "steps": 200}
 # example's make_site.sh, which needs GDAL, where it builds), so the input's own site
 # script is replaced by `true`
 LANDSLIDE_COMPARE = {"steps": 200, "site": "true"}
+# and the erodible bed: a column of one material onto a layer of a second (the fix's
+# keyword material), at the example's defaults (22 degrees, e/h0 = 0.1, dx 7 mm)
+ERODIBLE_COMPARE = {"steps": 300}
 SITE_FILES = ["site/landslide_site.data", "site/landslide_site.normals"]
 
 # what a bundle holds, and what it may take from the machine it runs on: glibc's parts
@@ -325,6 +330,16 @@ def smoke_run(bundle):
                     + "\n".join((proc.stdout + proc.stderr).splitlines()[-10:])]
         say(f"  plain styles, 5 steps of the landslide on the bundle's site: ran ({normals.group(1)}"
             " terrain normals read)")
+        # the compare stage's erodible bed: two materials (the integrator's keyword material,
+        # which a bundle built before commit 8464c16 does not know)
+        cmd = [lmp, "-in", example("erodible_bed"), "-var", "steps", "5", "-log", "none", "-echo", "none"]
+        proc = subprocess.run(cmd, capture_output=True, text=True, env=env, cwd=tmp, timeout=120)
+        result = [l for l in proc.stdout.splitlines() if l.startswith("result:")]
+        if proc.returncode != 0 or not result:
+            return ["the erodible bed (two materials) failed with the bundle (built before the"
+                    " materials of commit 8464c16? rerun tools/gpu/gpu-bundle):\n"
+                    + "\n".join((proc.stdout + proc.stderr).splitlines()[-10:])]
+        say("  plain styles, 5 steps of the erodible bed (two materials) with the bundle: ran")
     return []
 
 
@@ -467,7 +482,8 @@ def example(case):
 def compare(runner, result):
     """The cases of ctest Kokkos:equal_to_plain (the column with each wall treatment and
     option, the jet's phase change), the GPU against the plain styles on one core; and the
-    flume (walls on three sides, outflow). True where every double-precision case agrees;
+    flume (walls on three sides, outflow), the landslide and the erodible bed (two
+    materials). True where every double-precision case agrees;
     the single-precision sums (`precision mixed`) in another order are reported only:
     float's round-off, amplified as above, is the size of the bug it would look for."""
     import numpy as np
@@ -475,7 +491,8 @@ def compare(runner, result):
     import test_kokkos_equal
     result["compare"] = []
     cases = test_kokkos_equal.CASES + [("flume_impact", FLUME_COMPARE),
-                                       ("landslide", LANDSLIDE_COMPARE)]
+                                       ("landslide", LANDSLIDE_COMPARE),
+                                       ("erodible_bed", ERODIBLE_COMPARE)]
     agree = True
     for k, (case, variables) in enumerate(cases):
         label = test_kokkos_equal.label_of(case, variables)
@@ -609,7 +626,8 @@ def main():
             problems = check_bundle(unpacked, full=True, carried=bundle)
             if not problems:
                 problems = smoke_run(unpacked)
-        for inp in (COLLAPSE, os.path.join(POTENTIALS, "sand.gransph")):
+        for inp in (COLLAPSE, os.path.join(POTENTIALS, "sand.gransph"), example("landslide"),
+                    example("erodible_bed")):
             if not os.path.isfile(inp):
                 problems.append(f"input missing: {inp}")
         note = stale_note(bundle)
@@ -687,8 +705,8 @@ def check(bundle, work, start, budget, stages, result, flume):
         say("compute-sanitizer memcheck (column collapse dx 0.04, 10 steps, -k on g 1 -sf kk):")
         memcheck(runner, result)
     if "compare" in stages:
-        say("GPU against the plain styles on one CPU core (the cases of ctest Kokkos:equal_to_plain, the flume"
-            " and the landslide):")
+        say("GPU against the plain styles on one CPU core (the cases of ctest Kokkos:equal_to_plain, the flume,"
+            " the landslide and the erodible bed):")
         if not compare(runner, result):
             status = 1
     if "timings" in stages:
