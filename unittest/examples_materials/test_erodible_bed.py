@@ -28,15 +28,8 @@ REDUCED = {"dx": DX, "e": 2 * DX, "length": 0.9, "tmax": 2.5}
 
 def result(variables, cwd, ranks=1, args=ARGS):
     """the example's result line as a dict of its numbers"""
-    words = gransph_run.result_line(gransph_run.run(INPUT, variables, ranks=ranks, args=args,
-                                                    cwd=cwd))
-    numbers = {}
-    for key, value in zip(words[1:-1], words[2:]):
-        try:
-            numbers.setdefault(key, float(value))
-        except ValueError:
-            pass
-    return numbers
+    return gransph_run.result_numbers(gransph_run.result_line(
+        gransph_run.run(INPUT, variables, ranks=ranks, args=args, cwd=cwd)))
 
 
 def main():

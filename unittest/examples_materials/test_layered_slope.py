@@ -25,13 +25,7 @@ def result(variables, cwd, args):
     """the example's result line: the verdict and its numbers"""
     words = gransph_run.result_line(gransph_run.run(INPUT, {**REDUCED, **variables}, args=args,
                                                     cwd=cwd))
-    numbers = {"verdict": words[3]}
-    for key, value in zip(words[1:-1], words[2:]):
-        try:
-            numbers.setdefault(key, float(value))
-        except ValueError:
-            pass
-    return numbers
+    return {"verdict": words[3], **gransph_run.result_numbers(words)}
 
 
 def detail(r):

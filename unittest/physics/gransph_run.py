@@ -156,6 +156,18 @@ def result_line(stdout):
     raise RuntimeError("no 'result:' line in the output")
 
 
+def result_numbers(words):
+    """The numbers of a result line's words, each under the word before it (the first
+    time a word names one)."""
+    numbers = {}
+    for key, value in zip(words[1:-1], words[2:]):
+        try:
+            numbers.setdefault(key, float(value))
+        except ValueError:
+            pass
+    return numbers
+
+
 class Checks:
     """Named pass/fail checks that print as they go and end with the
     'N passed, N failed' line ctest's output is read for."""
