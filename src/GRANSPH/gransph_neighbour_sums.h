@@ -506,6 +506,38 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates_of(const Particles &p, int i
              : granular_rates<WALL_NORMAL, SHAPE, false, false>(p, i, vir, slide);
 }
 
+// The same with the options fixed at compile time, for a device kernel that holds this one
+// variant of the sums: a kernel's registers are those of its heaviest path, and the
+// variant with every option would make the others spill
+template <bool WALL_NORMAL, bool SHAPE, bool VIRIAL, bool FRICTION> struct SumVariant {
+  template <class Particles>
+  KOKKOS_INLINE_FUNCTION static ParticleRates rates(const Particles &p, int i, double *vir,
+                                                    double *slide)
+  {
+    return WALL_NORMAL || SHAPE || VIRIAL || FRICTION
+        ? granular_rates<WALL_NORMAL, SHAPE, VIRIAL, FRICTION>(p, i, vir, slide)
+        : granular_rates_without_options(p, i, SumsInLanes<Particles>());
+  }
+};
+
+// f(SumVariant<...>()) for options = {wall normal, shape, virial, friction}
+template <bool... FIXED> struct SumVariantOf {
+  template <class F> static void choose(const bool *options, F &&f)
+  {
+    if (options[sizeof...(FIXED)])
+      SumVariantOf<FIXED..., true>::choose(options, f);
+    else
+      SumVariantOf<FIXED..., false>::choose(options, f);
+  }
+};
+template <bool WALL_NORMAL, bool SHAPE, bool VIRIAL, bool FRICTION>
+struct SumVariantOf<WALL_NORMAL, SHAPE, VIRIAL, FRICTION> {
+  template <class F> static void choose(const bool *, F &&f)
+  {
+    f(SumVariant<WALL_NORMAL, SHAPE, VIRIAL, FRICTION>());
+  }
+};
+
 template <class Particles>
 KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir,
                                                     double *slide)
@@ -516,6 +548,16 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
   return p.shape_sums ? granular_rates_of<false, true>(p, i, vir, slide)
                       : granular_rates_of<false, false>(p, i, vir, slide);
 }
+
+// the variant of the options of p, at run time
+struct SumOptionsOfParticles {
+  template <class Particles>
+  KOKKOS_INLINE_FUNCTION static ParticleRates rates(const Particles &p, int i, double *vir,
+                                                    double *slide)
+  {
+    return granular_rates(p, i, vir, slide);
+  }
+};
 
 // The viscous-pressure diagnostic of granular particle i (compute sph/visc/atom): the
 // kernel-weighted mean over its neighbours of rho_i rho_j Pi_ij / 2, the pressure that,

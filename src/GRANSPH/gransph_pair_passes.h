@@ -132,13 +132,15 @@ KOKKOS_INLINE_FUNCTION void add_dummy_force(const Particles &p, int d, bool has_
 
 // Grain i's rates into the state and its mass times its acceleration into f; its virial
 // into vir and how it slides on walls with a friction of their own into slide (each if
-// not null). corrected: the renormalised velocity gradient (in dim dimensions).
-template <class Particles, class State, class Forces>
+// not null). corrected: the renormalised velocity gradient (in dim dimensions). Sums: the
+// variant of the neighbour sums, chosen at run time by default (a device kernel takes a
+// SumVariant of its own)
+template <class Sums = SumOptionsOfParticles, class Particles, class State, class Forces>
 KOKKOS_INLINE_FUNCTION void add_grain_rates(const Particles &p, int i, double mass,
                                             const State &state, const Forces &f, double ftm2v,
                                             bool corrected, int dim, double *vir, double *slide)
 {
-  ParticleRates r = granular_rates(p, i, vir, slide);
+  ParticleRates r = Sums::rates(p, i, vir, slide);
   for (int a = 0; a < 3; ++a) f(i, a) += mass * r.acc[a] / ftm2v;
   if (corrected) r.correct_gradient(dim);
   state.set_rates(i, r.drho, r.strain(), r.spin());

@@ -409,10 +409,28 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
   p.numneigh = d_pruned_count;
 }
 
-// as PairSPHGranular::grains
+// as PairSPHGranular::grains, in the kernel of the sums' variant of this evaluation
 template <class DeviceType>
 template <class Particles>
 void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p)
+{
+  const bool limited = p.wall_friction;
+  const bool options[4] = {p.wall_normal, p.shape_sums, vflag_either != 0, limited};
+  EV_FLOAT ev;
+  GRANSPH::SumVariantOf<>::choose(options, [&](auto variant) {
+    ev = this->template grains_of<decltype(variant)>(p);
+  });
+  if (vflag_global)
+    for (int k = 0; k < 6; ++k) virial[k] += ev.v[k];
+  if (sums_viscous_pressure()) viscous_pressures(p);
+  state_kk->k_rates.template modify<DeviceType>();
+  if (limited) k_slide.template modify<DeviceType>();    // for forward_comm_friction_slide
+}
+
+// the grains' rates with the sums' variant Sums (GRANSPH::SumVariant): a kernel each
+template <class DeviceType>
+template <class Sums, class Particles>
+EV_FLOAT PairSPHGranularKokkos<DeviceType>::grains_of(const Particles &p)
 {
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
   const auto state = state_kk->template state_on<DeviceType>();
@@ -432,18 +450,14 @@ void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p)
         if (!p.granular(i)) return;
         double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
         double s[SLIDE] = {1.0, 0.0, 0.0, 0.0};
-        GRANSPH::add_grain_rates(p, i, particles(i).mass, state, f, ftm2v, corrected, dim,
-                                 want_virial ? vir : nullptr, limited ? s : nullptr);
+        GRANSPH::add_grain_rates<Sums>(p, i, particles(i).mass, state, f, ftm2v, corrected,
+                                       dim, want_virial ? vir : nullptr, limited ? s : nullptr);
         if (limited)
           for (int k = 0; k < SLIDE; ++k) slide(SLIDE * i + k) = s[k];
         add_virial(sum, vatom, want_vatom, i, vir);
       },
       ev);
-  if (vflag_global)
-    for (int k = 0; k < 6; ++k) virial[k] += ev.v[k];
-  if (sums_viscous_pressure()) viscous_pressures(p);
-  state_kk->k_rates.template modify<DeviceType>();
-  if (limited) k_slide.template modify<DeviceType>();    // for forward_comm_friction_slide
+  return ev;
 }
 
 // as PairSPHGranular::viscous_pressures

@@ -55,6 +55,7 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   void wall_forces(const DeviceParticles<DeviceType> &p);
   // Particles: DeviceParticles<DeviceType> or, under precision mixed, over PairParticleSingle
   template <class Particles> void grains(const Particles &p);
+  template <class Sums, class Particles> EV_FLOAT grains_of(const Particles &p);
   template <class Particles> void viscous_pressures(const Particles &p);
   void prune_rows(DeviceParticles<DeviceType> &p, int nall, double moved_sq);
 
