@@ -26,6 +26,9 @@ PAIRS = [
     ("--cfl --cfl-parts column", "cfl --cfl-parts column"),
     ("--sphere-impact --heights 0.05 0.1 --per-diameter 4 5 --width 3 --label w",
      "sphere-impact --heights 0.05 0.1 --per-diameter 4 5 --width 3 --label w"),
+    # no older command line: the options in either order
+    ("erodible-bed --ranks 1 --slopes 0 22 --per-height 5 10",
+     "erodible-bed --slopes 0 22 --per-height 5 10 --ranks 1"),
 ]
 
 

@@ -57,6 +57,19 @@ subcommand writing its report (Markdown) and plots into its folder of validation
       --alphas A [A ...]        linear coefficients of the artificial viscosity (default the
                                 example's)
       --width W                 the bed's width in D, its depth W/2 (default 4)
+  tools/research/validate erodible-bed    a column released on a slope onto an erodible layer of
+                                          the same sand (examples/erodible_bed): its runout
+                                          against the layer's thickness on several slopes at
+                                          two resolutions, beside Mangeney et al. (2010)
+                                          (validation/erodible_bed/erodible_bed.md and .png)
+      --slopes S [S ...]        slopes in degrees (default 0 10 16 22)
+      --thickness F [F ...]     the layer's thickness e/h0, 0 the bare bed first (default
+                                0 0.0667 0.1333 0.2: 0 to 3 rows of grains at h0/dx = 15)
+      --per-height N [N ...]    particles across the column's height h0 (default 15 30)
+      --tmax T                  stop a run not at rest by T s (default 3)
+      --floor F                 rough (the default walls) or contact (the floor holds the grains
+                                as contacts do, at their own friction: wall/friction/hold
+                                stick): validation/erodible_bed/erodible_bed_contact.md
 
 Options of the studies (each where it applies):
       --models M [M ...]        (convergence, flume-convergence, cfl's column) default
@@ -93,6 +106,7 @@ from ..lammps import Runner
 from .basal_friction import basal_friction
 from .cfl import cfl_study
 from .convergence import convergence
+from .erodible_bed import erodible_bed
 from .flume import flume_convergence
 from .paper import column_collapse, flume_impact
 from .jets import jet_collision, jet_film
@@ -100,7 +114,8 @@ from .report import Report, generated, machine
 from .sphere_impact import SPHERE_ALPHA, sphere_impact
 
 NAME = "tools/research/validate"
-STUDIES = ["report", "convergence", "basal-friction", "flume-convergence", "cfl", "sphere-impact"]
+STUDIES = ["report", "convergence", "basal-friction", "flume-convergence", "cfl", "sphere-impact",
+           "erodible-bed"]
 # the mode flags of the command line before the subcommands, and their subcommands
 LEGACY = {"--quick": ["report", "--quick"], "--paper": ["report", "--paper"],
           "--convergence": ["convergence"], "--basal-friction": ["basal-friction"],
@@ -112,7 +127,8 @@ DEFAULTS = dict(paper=False, quick=False, aspect=[0.5, 2.0], ppr=None, plane=Fal
                 label="", material=None, var=[], heights=[0.025, 0.05, 0.1, 0.2],
                 per_diameter=[10, 12], alphas=[SPHERE_ALPHA], width=4.0, dx=None, tend=1.0,
                 deltas=["rough"], constants=None, cfl_parts=["wave", "column", "flume"],
-                replicas=1, perturb=1e-12, cfl_sound="reference")
+                replicas=1, perturb=1e-12, cfl_sound="reference", slopes=[0.0, 10.0, 16.0, 22.0],
+                thickness=[0.0, 0.0667, 0.1333, 0.2], per_height=[15, 30], tmax=3.0, floor="rough")
 
 
 def subcommand_first(argv):
@@ -190,6 +206,13 @@ def parser():
     sub.add_argument("--per-diameter", type=int, nargs="+", default=DEFAULTS["per_diameter"])
     sub.add_argument("--alphas", type=float, nargs="+", default=DEFAULTS["alphas"])
     sub.add_argument("--width", type=float, default=4.0)
+    sub = subs.add_parser("erodible-bed", parents=[common, label],
+                          help="a column onto an erodible layer on slopes: validation/erodible_bed/")
+    sub.add_argument("--slopes", type=float, nargs="+", default=DEFAULTS["slopes"])
+    sub.add_argument("--thickness", type=float, nargs="+", default=DEFAULTS["thickness"])
+    sub.add_argument("--per-height", type=int, nargs="+", default=DEFAULTS["per_height"])
+    sub.add_argument("--tmax", type=float, default=3.0)
+    sub.add_argument("--floor", choices=["rough", "contact"], default="rough")
     return top
 
 
@@ -241,7 +264,8 @@ def main(argv=None):
         sys.exit(f"{NAME}: --perturb goes with --replicas N, N > 1")
     if args.plane and not args.convergence:
         sys.exit(f"{NAME}: --plane goes with --convergence")
-    args.suffix = ("_plane" if args.plane else "") + (f"_{args.label}" if args.label else "")
+    args.suffix = (("_plane" if args.plane else "") + ("_contact" if args.floor == "contact" else "") +
+                   (f"_{args.label}" if args.label else ""))
     variant = ((" --plane" if args.plane else "") +
                (f" --pair-options \"{args.pair_options}\"" if args.pair_options else "") +
                (f" --fix-options \"{args.fix_options}\"" if args.fix_options else "") +
@@ -304,6 +328,15 @@ def main(argv=None):
         lines = ["# GRANSPH: the flume impact in resolution\n",
                  generated(f"{NAME} flume-convergence --dx {' '.join(map(str, args.dx))} "
                            f"--models {' '.join(args.models)}{variant}", started, machine(args))]
+    elif args.erodible_bed:
+        study, name = erodible_bed, f"erodible_bed/erodible_bed{args.suffix}.md"
+        lines = ["# GRANSPH: a granular column onto an erodible bed" + label + "\n",
+                 generated(f"{NAME} erodible-bed --slopes {' '.join(f'{s:g}' for s in args.slopes)} "
+                           f"--thickness {' '.join(f'{e:g}' for e in args.thickness)} --per-height "
+                           f"{' '.join(map(str, args.per_height))}"
+                           + (f" --tmax {args.tmax:g}" if args.tmax != 3.0 else "")
+                           + (f" --floor {args.floor}" if args.floor != "rough" else "") + variant,
+                           started, machine(args))]
     else:    # the paper's cases: a report after every case, complete at the end
         report = Report(root, started, [
             "# GRANSPH validation report\n",
