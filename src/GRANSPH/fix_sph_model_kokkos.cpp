@@ -43,20 +43,21 @@ template <class DeviceType> struct DeviceGrainRows {
   KOKKOS_INLINE_FUNCTION double mass(int k) const { return use_rmass ? rmass(k) : type_mass(type(k)); }
 };
 
-// One predictor or corrector step of every granular particle of one material (with the
-// group bits `own` among the materials' `material_bits`: MaterialTable::holds)
+// One predictor or corrector step of every granular particle of material k
 template <class DeviceType, class Model, GRANSPH::Stage STAGE, bool EXTRAPOLATE>
 struct StepFunctor {
   Model model;
   DeviceGrainRows<DeviceType> rows;
   typename GRANSPHCompat::KokkosTypes<DeviceType>::t_int_const mask;
-  int groupbit, material_bits, own;
+  int groupbit;
+  GRANSPH::MaterialTable materials;
+  int k;
   double dt, ftm2v;
 
   // whether atom i is a grain that the corrector left with a bad state
   KOKKOS_INLINE_FUNCTION int step(const int i) const
   {
-    const bool grain = (mask(i) & groupbit) && (mask(i) & material_bits) == own;
+    const bool grain = (mask(i) & groupbit) && materials.holds(k, mask(i));
     return grain ? GRANSPH::step_grain<STAGE, EXTRAPOLATE>(model, rows, i, dt, ftm2v) : 0;
   }
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const { step(i); }
@@ -211,15 +212,14 @@ int FixSPHModelKokkos<DeviceType, Model>::step_on_device(GRANSPH::Stage stage)
   const GRANSPH::MaterialTable &materials = this->materials;
   for (int k = 0; k < materials.n; ++k) {
     const Model &model = this->models[k];
-    const int any = materials.any_bits, own = materials.bits[k];
     if (stage == PREDICT && extrapolate)
-      run(StepFunctor<DeviceType, Model, PREDICT, true>{model, rows, mask, groupbit, any, own, dt, ftm2v});
+      run(StepFunctor<DeviceType, Model, PREDICT, true>{model, rows, mask, groupbit, materials, k, dt, ftm2v});
     else if (stage == PREDICT)
-      run(StepFunctor<DeviceType, Model, PREDICT, false>{model, rows, mask, groupbit, any, own, dt, ftm2v});
+      run(StepFunctor<DeviceType, Model, PREDICT, false>{model, rows, mask, groupbit, materials, k, dt, ftm2v});
     else if (extrapolate)
-      run(StepFunctor<DeviceType, Model, CORRECT, true>{model, rows, mask, groupbit, any, own, dt, ftm2v});
+      run(StepFunctor<DeviceType, Model, CORRECT, true>{model, rows, mask, groupbit, materials, k, dt, ftm2v});
     else
-      run(StepFunctor<DeviceType, Model, CORRECT, false>{model, rows, mask, groupbit, any, own, dt, ftm2v});
+      run(StepFunctor<DeviceType, Model, CORRECT, false>{model, rows, mask, groupbit, materials, k, dt, ftm2v});
   }
 
   atomKK->modified(this->execution_space, this->datamask_modify);
@@ -253,13 +253,12 @@ void FixSPHModelKokkos<DeviceType, Model>::cfl_maxima(double *local)
       Kokkos::Max<double>(local[0]));
   if (this->cfl_sound_reference) return;
   // a parallel region of its own per material, needed by local only
-  const int any = this->materials.any_bits;
-  for (int k = 0; k < this->materials.n; ++k) {
-    const int own = this->materials.bits[k];
+  const GRANSPH::MaterialTable materials = this->materials;
+  for (int k = 0; k < materials.n; ++k) {
     Kokkos::parallel_reduce(
         Kokkos::RangePolicy<DeviceType>(0, this->atom->nlocal),
         LAMMPS_LAMBDA(const int i, double &most) {
-          const bool grain = (mask(i) & groupbit) && (mask(i) & any) == own;
+          const bool grain = (mask(i) & groupbit) && materials.holds(k, mask(i));
           if (grain && -state(i, FSI::RHO) > most) most = -state(i, FSI::RHO);
         },
         Kokkos::Max<double>(local[1 + k]));

@@ -452,10 +452,10 @@ double PairSPHGranular::memory_usage()
 }
 
 // The friction coefficient mu of atoms [0, n) into `out`: that of the last wall/friction
-// entry whose group holds the dummy particle, -1 for rough walls and the others; a grain's
-// that of its material (friction_of). Returns an owned dummy of a wall with a friction of
-// its own that has no normal (`normals`, as pack_wall_normals writes them; the friction
-// is taken against it), or -1.
+// entry whose group holds the dummy particle (FrictionWall::MATERIAL: each grain's own),
+// -1 for rough walls and the others; a grain's that of its material. Returns an owned
+// dummy of a wall with a friction of its own that has no normal (`normals`, as
+// pack_wall_normals writes them; the friction is taken against it), or -1.
 int PairSPHGranular::pack_wall_friction(double *out, const double *unit_normals, int n) const
 {
   const int *mask = atom->mask, wallbit = integrator->wallbit, grainbit = integrator->groupbit;
@@ -466,7 +466,7 @@ int PairSPHGranular::pack_wall_friction(double *out, const double *unit_normals,
     if (!(mask[i] & wallbit)) continue;
     for (int k = 0; k < config.nfriction; ++k)
       if (mask[i] & group->bitmask[config.friction[k].group])
-        out[i] = friction_of(config.friction[k]);
+        out[i] = config.friction[k].mu;
     const double *ni = &unit_normals[3 * i];
     const bool limits = out[i] >= 0.0 || out[i] == GRANSPH::FrictionWall::MATERIAL;
     if (limits && ni[0] == 0.0 && ni[1] == 0.0 && ni[2] == 0.0 && missing < 0 &&
@@ -602,18 +602,6 @@ void PairSPHGranular::warn_if_far_from_single_origin()
 void PairSPHGranular::settings(int narg, char **arg)
 {
   config = GRANSPH::PairSettings::parse(lmp, narg, arg);
-}
-
-// the friction coefficient of a wall with a friction of its own (-1 for a rough one); for
-// a wall with the grains' friction, that of their material, or with materials of other
-// frictions FrictionWall::MATERIAL: each grain's own (pack_wall_friction)
-double PairSPHGranular::friction_of(const GRANSPH::FrictionWall &w) const
-{
-  if (w.mu != GRANSPH::FrictionWall::MATERIAL) return w.mu;
-  const GRANSPH::MaterialTable &materials = integrator->materials;
-  for (int k = 1; k < materials.n; ++k)
-    if (materials.slide_friction[k] != materials.slide_friction[0]) return w.mu;
-  return materials.slide_friction[0];
 }
 
 GRANSPH::Viscosity PairSPHGranular::viscosity() const

@@ -55,7 +55,6 @@ class PairSPHGranular : public Pair {
   FixSPHIntegrate *integrator;
   const FixSPHNormals *normals_fix;    // the dummies' own normals, or nullptr (init_style)
 
-  double friction_of(const GRANSPH::FrictionWall &w) const;
   // what the neighbour sums read besides the particles in this evaluation (`limited`:
   // with walls of a friction of their own)
   GRANSPH::SumOptions sum_options(bool limited) const;
