@@ -133,8 +133,10 @@ KOKKOS_INLINE_FUNCTION double pruned_displacement_sq(const Positions &x, const P
 // (friction 0) enter drho and grad_v with the normal part of the relative velocity only,
 // so that the grain feels no shear from them.
 // With VIRIAL, vir gets its virial 0.5 x_ij (x) F_ij (each pair is visited from both
-// sides), in LAMMPS' order xx yy zz xy xz yz. A neighbour on top of i (r = 0) has
-// grad W = 0 and Pi = 0.
+// sides), in LAMMPS' order xx yy zz xy xz yz; but for the pairs with a dummy of a wall
+// with a friction of its own, whose whole virial the dummy tallies (wall_force): the
+// grain's sums then carry no tally of the limited force. A neighbour on top of i (r = 0)
+// has grad W = 0 and Pi = 0.
 template <bool WALL_NORMAL, bool SHAPE, bool VIRIAL, bool FRICTION, class Particles>
 KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir,
                                                     double *slide)
@@ -163,12 +165,8 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
   Real gxx = 0, gxy = 0, gxz = 0, gyx = 0, gyy = 0, gyz = 0, gzx = 0, gzy = 0, gzz = 0;
   Real ox = 0, oy = 0, oz = 0;
   Real v0 = 0, v1 = 0, v2 = 0, v3 = 0, v4 = 0, v5 = 0;
-  // WallFrictionSums (f..), and the virial of its pairs' normal (n.) and tangential (t.)
-  // parts, and the moment q. of their limits (the tangential virial while sliding)
+  // WallFrictionSums
   Real fax = 0, fay = 0, faz = 0, fnx = 0, fny = 0, fnz = 0, f_lim = 0;
-  Real n0 = 0, n1 = 0, n2 = 0, n3 = 0, n4 = 0, n5 = 0;
-  Real t0 = 0, t1 = 0, t2 = 0, t3 = 0, t4 = 0, t5 = 0;
-  Real qx = 0, qy = 0, qz = 0;
   // the friction walls' kernel-weighted velocity (u.), for wall/friction/hold stick
   Real uw = 0, ux_w = 0, uy_w = 0, uz_w = 0;
 
@@ -177,8 +175,7 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
   GRANSPH_SIMD_SUM(drho, ax, ay, az, lxx, lxy, lxz, lyx, lyy, lyz, lzx, lzy, lzz, kxx, kyy,
                    kzz, kxy, kxz, kyz, dxx, dxy, dxz, dyx, dyy, dyz, dzx, dzy,
                    dzz, gxx, gxy, gxz, gyx, gyy, gyz, gzx, gzy, gzz, ox, oy, oz, v0, v1, v2,
-                   v3, v4, v5, fax, fay, faz, fnx, fny, fnz, f_lim, n0, n1, n2, n3, n4, n5,
-                   t0, t1, t2, t3, t4, t5, qx, qy, qz, uw, ux_w, uy_w, uz_w)
+                   v3, v4, v5, fax, fay, faz, fnx, fny, fnz, f_lim, uw, ux_w, uy_w, uz_w)
   for (int k = 0; k < n; ++k) {
     const int j = neighbours(k);
     const auto &pj = p.particle(j);
@@ -227,26 +224,6 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
       ux_w += vw * pj.v[0];
       uy_w += vw * pj.v[1];
       uz_w += vw * pj.v[2];
-      if (VIRIAL) {    // F = m_i (a_n + a_t), 0.5 x_ij (x) F for either part
-        const Real hn = limited ? Real(0.5) * m_i * an : Real(0),
-                   ht = limited ? Real(0.5) * m_i : Real(0);
-        qx += hn * mu * rx;
-        qy += hn * mu * ry;
-        qz += hn * mu * rz;
-        const Real atx = m * tx - an * nx, aty = m * ty - an * ny, atz = m * tz - an * nz;
-        n0 += hn * rx * nx;
-        n1 += hn * ry * ny;
-        n2 += hn * rz * nz;
-        n3 += hn * rx * ny;
-        n4 += hn * rx * nz;
-        n5 += hn * ry * nz;
-        t0 += ht * rx * atx;
-        t1 += ht * ry * aty;
-        t2 += ht * rz * atz;
-        t3 += ht * rx * aty;
-        t4 += ht * rx * atz;
-        t5 += ht * ry * atz;
-      }
     }
     const Real m_a = limited ? Real(0) : m;
     ax += m_a * tx;
@@ -315,7 +292,7 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
       oy += vw * ry;
       oz += vw * rz;
     }
-    if (VIRIAL) {    // F_ij = m_i m_j t (a friction wall's pair: above)
+    if (VIRIAL) {    // F_ij = m_i m_j t (a friction wall's pair: its dummy's)
       const Real mm = Real(0.5) * m_i * m_a;
       v0 += mm * rx * tx;
       v1 += mm * ry * ty;
@@ -350,15 +327,6 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     if (slide) {
       slide[0] = s;
       for (int k = 0; k < 3; ++k) slide[1 + k] = t[k];
-    }
-    if (VIRIAL) {    // while sliding each pair's tangential part is mu_d a_n t (wall_force)
-      const bool slides = s < 1.0;
-      v0 += n0 + (slides ? qx * t[0] : t0);
-      v1 += n1 + (slides ? qy * t[1] : t1);
-      v2 += n2 + (slides ? qz * t[2] : t2);
-      v3 += n3 + (slides ? qx * t[1] : t3);
-      v4 += n4 + (slides ? qx * t[2] : t4);
-      v5 += n5 + (slides ? qy * t[2] : t5);
     }
   }
   if (VIRIAL) {
@@ -683,7 +651,8 @@ template <class Particles> KOKKOS_INLINE_FUNCTION WallSums wall_sums(const Parti
 // in place; with VIRIAL, vir as in granular_rates. With FRICTION, a dummy of a wall with
 // a friction of its own takes the opposite of what the grain got from it: the pair force
 // as it is while the walls hold the grain, and while it slides the normal part and mu_d
-// times it along the grain's slide direction (WallFrictionSums).
+// times it along the grain's slide direction (WallFrictionSums); and the pair's whole
+// virial x_dj (x) f_dj, of which granular_rates tallies no half.
 template <bool VIRIAL, bool FRICTION, class Particles>
 KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force, double *vir)
 {
@@ -701,6 +670,7 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
   const bool of_grains = mu_d == FrictionWall::MATERIAL, limited = mu_d >= 0.0 || of_grains;
   const double nx = limited ? p.normal(d, 0) : 0.0, ny = limited ? p.normal(d, 1) : 0.0,
                nz = limited ? p.normal(d, 2) : 0.0;
+  const double share = limited ? 1.0 : 0.5;    // of the virial of each pair
   double fx = 0.0, fy = 0.0, fz = 0.0;
   double v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0, v4 = 0.0, v5 = 0.0;
   const int n = p.num_neighbours(d);
@@ -736,12 +706,12 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
     fy += fdy;
     fz += fdz;
     if (VIRIAL) {
-      v0 += 0.5 * rx * fdx;
-      v1 += 0.5 * ry * fdy;
-      v2 += 0.5 * rz * fdz;
-      v3 += 0.5 * rx * fdy;
-      v4 += 0.5 * rx * fdz;
-      v5 += 0.5 * ry * fdz;
+      v0 += share * rx * fdx;
+      v1 += share * ry * fdy;
+      v2 += share * rz * fdz;
+      v3 += share * rx * fdy;
+      v4 += share * rx * fdz;
+      v5 += share * ry * fdz;
     }
   }
   force[0] = fx;

@@ -11,8 +11,9 @@ layer on a floor of interface friction angle delta (in.wall_friction)
   delta, stops and holds;
 - on a slip floor keeps its speed within 1% over 0.5 s;
 - on a floor of two halves of different delta, each half gives its own friction;
-- gives the same history on 1 and 2 MPI ranks (how the grains slide reaches the
-  ghosts), and with the /kk styles on 2 threads (LAMMPS 29Sep2021 under Kokkos cannot
+- gives the same history, and the same virial, on 1 and 2 MPI ranks (how the grains
+  slide reaches the ghosts; the dummies tally the whole virial of their pairs, ghosts'
+  pairs included), and with the /kk styles on 2 threads (LAMMPS 29Sep2021 under Kokkos cannot
   pass the floor's normals to the periodic images: there the pair style refuses).
 The rough floor (no wall/friction) is tested unchanged by test_slope.py and test_slide.py."""
 
@@ -34,6 +35,11 @@ def run(tmp, ranks=1, args=(), **variables):
     gransph_run.run(os.path.join(HERE, "in.wall_friction"), variables, ranks=ranks, args=args,
                     cwd=tmp)
     return np.loadtxt(os.path.join(tmp, "wall_friction.txt"), unpack=True)
+
+
+def virial(tmp):
+    """the last run's virial record: t, xx, yy, zz, xy, xz, yz"""
+    return np.loadtxt(os.path.join(tmp, "wall_friction_virial.txt"), unpack=True)
 
 
 def slope(t, v):
@@ -121,17 +127,26 @@ with tempfile.TemporaryDirectory() as tmp:
         check(f"two floors: half {half} gives its own friction tan({delta}) = {mu:.4f} within 3%",
               abs(ratio / mu - 1.0) < 0.03, f"{ratio:.4f}")
     # 1 against 2 ranks, a short run (round-off grows over a long one), sliding at once
-    records = [run(tmp, ranks, delta1=15, delta2=25, v0=1.0, load=300, tmeas=0.01)
-               for ranks in (1, 2)]
+    records, virials = [], []
+    for ranks in (1, 2):
+        records.append(run(tmp, ranks, delta1=15, delta2=25, v0=1.0, load=300, tmeas=0.01))
+        virials.append(virial(tmp))
     def difference(a, b):
         return max(np.max(np.abs(x - y)) / max(np.max(np.abs(x)), 1e-300) for x, y in zip(a, b))
     assert np.min(records[0][1]) < 0.99, "the layer did not slow down: nothing was compared"
+    # the friction's shear on the floor: xz, against the weight's zz
+    assert np.min(virials[0][5]) < -0.1 * np.max(virials[0][3]), "no shear in the virial"
     diff = difference(records[0], records[1])
     check("1 and 2 ranks: the same history", diff < 1e-9, f"largest relative difference {diff:.1e}")
+    diff = difference(virials[0], virials[1])
+    check("1 and 2 ranks: the same virial", diff < 1e-9, f"largest relative difference {diff:.1e}")
     try:
         kk = run(tmp, delta1=15, delta2=25, v0=1.0, load=300, tmeas=0.01, args=KOKKOS)
         diff = difference(records[0], kk)
         check("plain and /kk: the same history", diff < 1e-9,
+              f"largest relative difference {diff:.1e}")
+        diff = difference(virials[0], virial(tmp))
+        check("plain and /kk: the same virial", diff < 1e-9,
               f"largest relative difference {diff:.1e}")
     except RuntimeError as error:
         output = gransph_run.LAST_OUTPUT
