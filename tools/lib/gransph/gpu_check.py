@@ -25,7 +25,10 @@ On the GPU machine (the device tool: run(command="tools/gpu/gpu-check", carry=["
   6. the paper's flume (dx = 10 mm, to 3 s; --flume-dx, --flume-tend for another),
      Drucker-Prager then phase change, as far as the budget allows: simulated time
      reached, steps, wall time, force history and its largest sample, largest 20 ms mean
-     and first impact (as tools/research/validate takes them).
+     and first impact (as tools/research/validate takes them);
+  7. two MPI ranks on the one GPU (the bundle's Open MPI, bin/mpirun): the column at dx 0.02
+     against one rank, per atom to TOLERANCE, and its throughput at about 1e6 particles
+     beside one rank's.
 Each stage runs whether or not the ones before it failed. Writes gpu-check.json,
 gpu-check.log and lammps-logs.tar.gz (every run's log, screen output and stderr) to $OUT (default
 ./gpu-check-out). A stage that would run past the budget (--budget, 8 minutes) is skipped
@@ -70,7 +73,7 @@ KOKKOS_GPU = ["-k", "on", "g", "1", "-sf", "kk"]
 # about 1%, and its state by far more than 1e-6 within 300 steps: three orders above.
 TOLERANCE = 1e-9
 FIRST = {"dx": 0.04, "steps": 20}
-STAGES = ("launch", "memcheck", "compare", "timings", "flume")
+STAGES = ("launch", "memcheck", "compare", "timings", "flume", "ranks")
 
 # the timing runs: (case, label, variables, steps). The column at the bench's 1e5 and, solved
 # for grains ~ dx^-3 plus floor ~ dx^-2 from its counts (42,300 + 60,900), 1e6 and 4e6; the
@@ -99,6 +102,10 @@ LANDSLIDE_COMPARE = {"steps": 200, "site": "true"}
 # keyword material), at the example's defaults (22 degrees, e/h0 = 0.1, dx 7 mm)
 ERODIBLE_COMPARE = {"steps": 300}
 SITE_FILES = ["site/landslide_site.data", "site/landslide_site.normals"]
+# the ranks stage: 2 ranks on the one GPU against 1, compared as the compare stage compares
+# (the column's 300 steps at dx 0.02), then timed at the timing stage's 1e6
+RANKS_COMPARE = {"dx": 0.02, "steps": 300}
+RANKS_TIMING = ("column", "1e6", {"dx": 0.00271}, 100)
 
 # what a bundle holds, and what it may take from the machine it runs on: glibc's parts
 # and the C++ runtime (every Linux image has them; the bundle's own code needs glibc 2.34
@@ -108,6 +115,7 @@ SITE_FILES = ["site/landslide_site.data", "site/landslide_site.normals"]
 # needs glibc 2.36 itself, so it is no default).
 REQUIRED = ["bin/lmp", "lib/liblammps.so.0", "lib/gransphplugin.so", "lib/libcudart.so.13",
             "lib/libkokkoscore.so.3.4", "lib/libkokkoscontainers.so.3.4",
+            "bin/mpirun", "ompi/mpi.env", "lib/libmpi.so.40",
             "lib/cxx/libstdc++.so.6", "lib/cxx/libgcc_s.so.1", "MANIFEST"] + SITE_FILES
 SYSTEM_LIBS = {"linux-vdso.so.1", "ld-linux-x86-64.so.2", "libc.so.6", "libm.so.6",
                "libdl.so.2", "libpthread.so.0", "librt.so.1", "libstdc++.so.6", "libgcc_s.so.1"}
@@ -125,16 +133,26 @@ def say(text=""):
 
 # ---------------------------------------------------------------- the bundle
 def elf_files(bundle):
+    """every program and library of the bundle, Open MPI's components among them"""
     out = []
-    for sub in ("bin", "lib"):
-        for name in sorted(os.listdir(os.path.join(bundle, sub))):
-            path = os.path.join(bundle, sub, name)
-            if not os.path.isfile(path):
-                continue
-            with open(path, "rb") as f:
-                if f.read(4) == b"\x7fELF":
-                    out.append(path)
+    for sub in ("bin", "lib", "ompi", "pmix"):
+        for folder, _, names in os.walk(os.path.join(bundle, sub)):
+            if folder == os.path.join(bundle, "lib", "cxx"):
+                continue                  # the fallback C++ runtime: checked on its own
+            for name in sorted(names):
+                path = os.path.join(folder, name)
+                with open(path, "rb") as f:
+                    if f.read(4) == b"\x7fELF":
+                        out.append(path)
     return out
+
+
+def mpi_environment(bundle):
+    """what a rank of the bundle's Open MPI needs in its environment, also one run without
+    mpirun (ompi/mpi.env, written by tools/gpu/pack-openmpi; $BUNDLE is the bundle's folder)"""
+    with open(os.path.join(bundle, "ompi", "mpi.env")) as f:
+        pairs = [line.strip().split("=", 1) for line in f if "=" in line]
+    return {name: value.replace("$BUNDLE", bundle) for name, value in pairs}
 
 
 def fatbin_images(path):
@@ -301,7 +319,7 @@ def smoke_run(bundle):
     with tempfile.TemporaryDirectory() as tmp:
         os.symlink(stub, os.path.join(tmp, "libcuda.so.1"))
         env = dict(os.environ, LD_LIBRARY_PATH=os.path.join(bundle, "lib") + ":" + tmp,
-                   LAMMPS_POTENTIALS=POTENTIALS)
+                   LAMMPS_POTENTIALS=POTENTIALS, OMP_NUM_THREADS="1", **mpi_environment(bundle))
         lmp = os.path.join(bundle, "bin", "lmp")
         help_text = subprocess.run([lmp, "-h"], capture_output=True, text=True, env=env, cwd=tmp).stdout
         api = re.search(r"KOKKOS package API: (.*)", help_text)
@@ -340,7 +358,35 @@ def smoke_run(bundle):
                     " materials of commit 8464c16? rerun tools/gpu/gpu-bundle):\n"
                     + "\n".join((proc.stdout + proc.stderr).splitlines()[-10:])]
         say("  plain styles, 5 steps of the erodible bed (two materials) with the bundle: ran")
-    return []
+        return ranks_smoke_run(bundle, env, tmp)
+
+
+def ranks_smoke_run(bundle, env, tmp):
+    """The ranks stage's comparison with the plain styles: the column at dx 0.04 on 1 and
+    on 2 ranks of the bundle's Open MPI, per atom to TOLERANCE. Problems (empty: agree)."""
+    import gransph_run
+    states = {}
+    for ranks in (1, 2):
+        cwd = os.path.join(tmp, f"ranks{ranks}")
+        os.makedirs(cwd)
+        cmd = [os.path.join(bundle, "bin", "mpirun"), "-np", str(ranks), os.path.join(bundle, "bin", "lmp"),
+               "-in", COLLAPSE, "-var", "dx", "0.04", "-var", "steps", "100", "-var", "dump", "1",
+               "-log", "none", "-echo", "none"]
+        proc = subprocess.run(cmd, capture_output=True, text=True, env=env, cwd=cwd, timeout=120)
+        if proc.returncode != 0 or not os.path.isfile(os.path.join(cwd, "column_collapse.dump")):
+            return [f"plain styles on {ranks} rank(s) with the bundle's Open MPI failed:\n"
+                    + "\n".join((proc.stdout + proc.stderr).splitlines()[-10:])]
+        states[ranks] = gransph_run.read_dump(os.path.join(cwd, "column_collapse.dump"))
+    moved = float(max(abs(states[1]["vx"]).max(), abs(states[1]["vz"]).max()))
+    if moved == 0.0:
+        return ["the column did not move in 100 steps: nothing was compared"]
+    diffs = gransph_run.dump_differences(states[1], states[2])
+    worst = max(diffs, key=diffs.get)
+    say(f"  plain styles, 100 steps of the column at dx 0.04 (largest speed {moved:.2g} m/s) on 2"
+        f" ranks of the bundle's mpirun against 1: " + (f"worst {worst} {diffs[worst]:.1e}" if diffs[worst]
+                                                        else "the same to the bit")
+        + f" (tolerance {TOLERANCE:g})")
+    return [] if diffs[worst] <= TOLERANCE else [f"2 ranks differ from 1 by {diffs[worst]:.1e} in {worst}"]
 
 
 def stale_note(bundle):
@@ -378,7 +424,7 @@ class Runner:
         self.libpath = path
         say(f"  lmp loads with the bundle's {os.path.relpath(path.split(':')[-1], bundle)}"
             f"{' (the C++ runtime of the image was too old)' if 'cxx' in path else ' and the image C++ runtime'}")
-        self.env = dict(env,
+        self.env = dict(env, **mpi_environment(bundle),
                         LAMMPS_POTENTIALS=POTENTIALS, OMP_NUM_THREADS="1",
                         # JIT results (only for code without sm_90 SASS) kept for the whole call
                         CUDA_CACHE_PATH=os.path.join(work, "cuda-cache"),
@@ -719,6 +765,8 @@ def check(bundle, work, start, budget, stages, result, flume):
         paper_flume(runner, result, "elastoplastic", flume=flume,
                     reserve=max(FLUME_RESERVE_S, left / 2) if left > 2 * FLUME_RESERVE_S else 0)
         paper_flume(runner, result, "phasechange", reserve=0, flume=flume)
+    if "ranks" in stages:
+        status = max(status, two_ranks(runner, result))
     return status
 
 
@@ -773,6 +821,44 @@ def timings(runner, result):
             f" {t['steps']} steps in {t['loop_s']:.2f} s (wall {wall:.0f} s with setup):"
             f" {t['particle_steps_per_s']:.3e} particle-steps/s; {phases}; neighbour bins {t['bins']}")
     return status
+
+
+
+def two_ranks(runner, result):
+    """two MPI ranks sharing the one GPU against one rank: the column compared per atom,
+    then timed at RANKS_TIMING's size; the exit status"""
+    import gransph_run
+    say("two ranks on the one GPU (the bundle's Open MPI), -k on g 1 -sf kk:")
+    mpirun = [os.path.join(runner.bundle, "bin", "mpirun"), "-np", "2"]
+    entry = result["ranks"] = {"compare": RANKS_COMPARE, "tolerance": TOLERANCE}
+    try:
+        states = {}
+        for ranks, wrapper in ((1, ()), (2, mpirun)):
+            name = f"ranks{ranks}"
+            _, entry[f"ranks{ranks}_s"], _ = runner.run(name, {**RANKS_COMPARE, "dump": 1}, KOKKOS_GPU,
+                                                        timeout=RUN_S, wrapper=wrapper)
+            states[ranks] = gransph_run.read_dump(os.path.join(runner.work, name, "column_collapse.dump"))
+        diffs = gransph_run.dump_differences(states[1], states[2])
+        worst = max(diffs, key=diffs.get)
+        entry.update(atoms=len(states[1]["id"]), max_relative_difference=diffs, worst=worst,
+                     ok=diffs[worst] <= TOLERANCE)
+        say(f"  column dx {RANKS_COMPARE['dx']}, {RANKS_COMPARE['steps']} steps, {entry['atoms']} particles:"
+            f" 2 ranks against 1, worst {worst} {diffs[worst]:.2e}: {'agree' if entry['ok'] else 'DO NOT AGREE'}")
+        case, label, variables, steps = RANKS_TIMING
+        out, wall, _ = runner.run(f"ranks2_{case}_{label}", {**variables, "steps": steps}, KOKKOS_GPU,
+                                  script=os.path.join(TOP, bench.INPUTS[case]), timeout=2 * RUN_S,
+                                  wrapper=mpirun)
+        t = entry["timing"] = dict(timing(out), case=case, label=label, wall_s=wall)
+        one = next((o for o in result.get("timings", []) if o["label"] == label and not o["blocking"]), None)
+        say(f"  {case} {label} on 2 ranks: {t['atoms']:,} particles, {t['steps']} steps in {t['loop_s']:.2f} s:"
+            f" {t['particle_steps_per_s']:.3e} particle-steps/s"
+            + (f", {t['particle_steps_per_s'] / one['particle_steps_per_s']:.2f} times one rank's" if one else ""))
+    except (RuntimeError, TimeoutError) as e:
+        say(f"  FAILED: {e}")
+        entry["error"] = str(e)
+        result["errors"].append(str(e))
+        return 1
+    return 0 if entry["ok"] else 1
 
 
 if __name__ == "__main__":
