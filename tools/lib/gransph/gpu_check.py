@@ -22,13 +22,13 @@ On the GPU machine (the device tool: run(command="tools/gpu/gpu-check", carry=["
      timing breakdown (Pair, Neigh, Comm, Modify, ...) from second runs with
      CUDA_LAUNCH_BLOCKING=1, since asynchronous kernel launches put device time into
      whichever section next waits for the device;
-  6. the paper's flume (dx = 10 mm, to 3 s; --flume-dx, --flume-tend for another),
+  6. two MPI ranks on the one GPU (the bundle's Open MPI, bin/mpirun): the column at dx 0.02
+     against one rank, per atom to TOLERANCE, and its throughput at about 1e6 particles
+     beside one rank's;
+  7. the paper's flume (dx = 10 mm, to 3 s; --flume-dx, --flume-tend for another),
      Drucker-Prager then phase change, as far as the budget allows: simulated time
      reached, steps, wall time, force history and its largest sample, largest 20 ms mean
-     and first impact (as tools/research/validate takes them);
-  7. two MPI ranks on the one GPU (the bundle's Open MPI, bin/mpirun): the column at dx 0.02
-     against one rank, per atom to TOLERANCE, and its throughput at about 1e6 particles
-     beside one rank's.
+     and first impact (as tools/research/validate takes them).
 Each stage runs whether or not the ones before it failed. Writes gpu-check.json,
 gpu-check.log and lammps-logs.tar.gz (every run's log, screen output and stderr) to $OUT (default
 ./gpu-check-out). A stage that would run past the budget (--budget, 8 minutes) is skipped
@@ -73,7 +73,7 @@ KOKKOS_GPU = ["-k", "on", "g", "1", "-sf", "kk"]
 # about 1%, and its state by far more than 1e-6 within 300 steps: three orders above.
 TOLERANCE = 1e-9
 FIRST = {"dx": 0.04, "steps": 20}
-STAGES = ("launch", "memcheck", "compare", "timings", "flume", "ranks")
+STAGES = ("launch", "memcheck", "compare", "timings", "ranks", "flume")
 
 # the timing runs: (case, label, variables, steps). The column at the bench's 1e5 and, solved
 # for grains ~ dx^-3 plus floor ~ dx^-2 from its counts (42,300 + 60,900), 1e6 and 4e6; the
@@ -757,6 +757,8 @@ def check(bundle, work, start, budget, stages, result, flume):
             status = 1
     if "timings" in stages:
         status = max(status, timings(runner, result))
+    if "ranks" in stages:    # before the flume, which takes what is left of the budget
+        status = max(status, two_ranks(runner, result))
     if "flume" in stages:
         say(f"the flume (dx = {flume['dx'] * 1000:g} mm, to {flume['tend']:g} s; the paper's: 10 mm to 3 s,"
             " 72 minutes on a Quadro K620):")
@@ -765,8 +767,6 @@ def check(bundle, work, start, budget, stages, result, flume):
         paper_flume(runner, result, "elastoplastic", flume=flume,
                     reserve=max(FLUME_RESERVE_S, left / 2) if left > 2 * FLUME_RESERVE_S else 0)
         paper_flume(runner, result, "phasechange", reserve=0, flume=flume)
-    if "ranks" in stages:
-        status = max(status, two_ranks(runner, result))
     return status
 
 
@@ -843,7 +843,8 @@ def two_ranks(runner, result):
         entry.update(atoms=len(states[1]["id"]), max_relative_difference=diffs, worst=worst,
                      ok=diffs[worst] <= TOLERANCE)
         say(f"  column dx {RANKS_COMPARE['dx']}, {RANKS_COMPARE['steps']} steps, {entry['atoms']} particles:"
-            f" 2 ranks against 1, worst {worst} {diffs[worst]:.2e}: {'agree' if entry['ok'] else 'DO NOT AGREE'}")
+            f" 2 ranks against 1, " + (f"worst {worst} {diffs[worst]:.2e}" if diffs[worst] else "the same to the bit")
+            + f": {'agree' if entry['ok'] else 'DO NOT AGREE'}")
         case, label, variables, steps = RANKS_TIMING
         out, wall, _ = runner.run(f"ranks2_{case}_{label}", {**variables, "steps": steps}, KOKKOS_GPU,
                                   script=os.path.join(TOP, bench.INPUTS[case]), timeout=2 * RUN_S,
@@ -853,6 +854,13 @@ def two_ranks(runner, result):
         say(f"  {case} {label} on 2 ranks: {t['atoms']:,} particles, {t['steps']} steps in {t['loop_s']:.2f} s:"
             f" {t['particle_steps_per_s']:.3e} particle-steps/s"
             + (f", {t['particle_steps_per_s'] / one['particle_steps_per_s']:.2f} times one rank's" if one else ""))
+        # where the time goes, the ranks' messages staged through the host among it
+        out, _, _ = runner.run(f"ranks2_{case}_{label}_blocking", {**variables, "steps": BLOCKING_STEPS[label]},
+                               KOKKOS_GPU, script=os.path.join(TOP, bench.INPUTS[case]),
+                               env={"CUDA_LAUNCH_BLOCKING": "1"}, timeout=2 * RUN_S, wrapper=mpirun)
+        phases = entry["blocking_phases"] = breakdown(out)
+        say("  the same blocking: " + ", ".join(f"{k} {v['percent']:.0f}%" for k, v in phases.items()
+                                                 if v["percent"] >= 0.5))
     except (RuntimeError, TimeoutError) as e:
         say(f"  FAILED: {e}")
         entry["error"] = str(e)
