@@ -164,6 +164,12 @@ CASES += [
     ("geostatic with several materials",
      dict(fix=MATERIAL_GROUPS + SPH + "material up {sand25} Sand25 geostatic 0.05"),
      "geostatic takes one density and is for one material, not 2"),
+    ("compute sph/material/atom with an argument",
+     dict(run="compute material sand sph/material/atom 1\nrun 10"),
+     "Illegal compute sph/material/atom command: no arguments"),
+    ("compute sph/material/atom without an integrator",
+     dict(pair_style="zero 0.024", fix="", run="compute material sand sph/material/atom\nrun 10"),
+     "Compute sph/material/atom needs a GRANSPH integrator fix"),
 ]
 
 # fix sph/normals: its keywords and the files it reads ({name} is tmp/name.normals); the
