@@ -21,7 +21,8 @@ On the GPU machine (the device tool: run(command="tools/gpu/gpu-check", carry=["
      bench's flume and jet: particle-steps per second from LAMMPS' loop time, and its
      timing breakdown (Pair, Neigh, Comm, Modify, ...) from second runs with
      CUDA_LAUNCH_BLOCKING=1, since asynchronous kernel launches put device time into
-     whichever section next waits for the device;
+     whichever section next waits for the device; the device memory each run peaks at
+     (nvidia-smi, sampled), hence bytes per particle and the largest column the GPU holds;
   6. two MPI ranks on the one GPU (the bundle's Open MPI, bin/mpirun): the column at dx 0.02
      against one rank, per atom to TOLERANCE, and its throughput at about 1e6 particles
      beside one rank's;
@@ -47,6 +48,7 @@ import subprocess
 import sys
 import tarfile
 import tempfile
+import threading
 import time
 
 from . import TOP
@@ -521,6 +523,59 @@ def gpu_info():
     return gpus, None
 
 
+class DeviceMemory:
+    """The GPU memory in use (MiB, nvidia-smi) before and at most while the `with` block
+    runs, sampled every quarter second: a run's peak less what was in use before it."""
+    def __init__(self):
+        self.before = self.peak = self._used()
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._sample, daemon=True)
+
+    @staticmethod
+    def _used():
+        proc = subprocess.run(["nvidia-smi", "--query-gpu=memory.used", "--format=csv,noheader,nounits"],
+                              capture_output=True, text=True)
+        try:
+            return float(proc.stdout.split()[0])
+        except (IndexError, ValueError):
+            return float("nan")
+
+    def _sample(self):
+        while not self._stop.wait(0.25):
+            self.peak = max(self.peak, self._used())
+
+    def __enter__(self):
+        self._thread.start()
+        return self
+
+    def __exit__(self, *exc):
+        self._stop.set()
+        self._thread.join()
+
+    def mib(self):
+        return self.peak - self.before
+
+
+def device_memory(result):
+    """bytes per particle on the device from the column's two largest timing runs (the
+    difference in their peaks over the difference in particles), and the largest column
+    the GPU's memory would hold at that rate"""
+    runs = sorted((t for t in result["timings"] if t["case"] == "column" and not t["blocking"]
+                   and t.get("device_mib") == t.get("device_mib")), key=lambda t: t["atoms"])
+    if len(runs) < 2:
+        return
+    small, large = runs[-2], runs[-1]
+    per_particle = (large["device_mib"] - small["device_mib"]) * 2**20 / (large["atoms"] - small["atoms"])
+    fixed = large["device_mib"] * 2**20 - per_particle * large["atoms"]
+    total = float(result["gpus"][0]["memory.total"].split()[0]) * 2**20
+    largest = (total - fixed) / per_particle if per_particle > 0 else None
+    result["device_memory"] = {"bytes_per_particle": per_particle, "fixed_bytes": fixed,
+                               "largest_column_particles": largest}
+    say(f"  device memory: {per_particle:.0f} bytes per particle (column, {small['label']} to {large['label']}),"
+        f" {fixed / 2**20:.0f} MiB besides; the GPU's {total / 2**30:.0f} GiB would hold a column of about"
+        f" {largest:.2e} particles" if largest else "  device memory: no growth with the particles measured")
+
+
 def example(case):
     return os.path.join(TOP, "examples", case, f"in.{case}")
 
@@ -797,10 +852,11 @@ def timings(runner, result):
     for case, label, variables, steps, blocking in stages:
         name = f"time_{case}_{label}" + ("_blocking" if blocking else "")
         try:
-            out, wall, _ = runner.run(name, {**variables, "steps": BLOCKING_STEPS[label] if blocking else steps},
-                                      KOKKOS_GPU, script=os.path.join(TOP, bench.INPUTS[case]),
-                                      env={"CUDA_LAUNCH_BLOCKING": "1"} if blocking else None,
-                                      timeout=2 * RUN_S)
+            with DeviceMemory() as memory:
+                out, wall, _ = runner.run(name, {**variables, "steps": BLOCKING_STEPS[label] if blocking else steps},
+                                          KOKKOS_GPU, script=os.path.join(TOP, bench.INPUTS[case]),
+                                          env={"CUDA_LAUNCH_BLOCKING": "1"} if blocking else None,
+                                          timeout=2 * RUN_S)
         except TimeoutError as e:
             say(f"  {name}: skipped: {e}")
             result["skipped"].append(str(e))
@@ -810,7 +866,8 @@ def timings(runner, result):
             result["errors"].append(str(e))
             status = 1
             continue
-        t = dict(timing(out), case=case, label=label, variables=variables, blocking=blocking, wall_s=wall)
+        t = dict(timing(out), case=case, label=label, variables=variables, blocking=blocking, wall_s=wall,
+                 device_mib=memory.mib())
         result["timings"].append(t)
         if t["bins"] == [1, 1, 1]:    # every list build O(N^2): see PairSPHGranularKokkos::init_style
             say(f"  FAILED: {name}: one neighbour bin for the whole box")
@@ -819,7 +876,9 @@ def timings(runner, result):
         phases = ", ".join(f"{k} {v['percent']:.0f}%" for k, v in t["phases"].items() if v["percent"] >= 0.5)
         say(f"  {case} {label}{' blocking' if blocking else ''}: {t['atoms']:,} particles ({t['grains']:,} grains),"
             f" {t['steps']} steps in {t['loop_s']:.2f} s (wall {wall:.0f} s with setup):"
-            f" {t['particle_steps_per_s']:.3e} particle-steps/s; {phases}; neighbour bins {t['bins']}")
+            f" {t['particle_steps_per_s']:.3e} particle-steps/s; {phases}; neighbour bins {t['bins']};"
+            f" device memory {t['device_mib']:.0f} MiB")
+    device_memory(result)
     return status
 
 
