@@ -459,24 +459,9 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates_without_options(const Partic
   return granular_rates<false, false, false, false>(p, i, nullptr, nullptr);
 }
 
-// granular_rates with the options of p, the virial if vir is not null, and with
-// wall/friction the grain's share and slide direction if slide is not null
-template <bool WALL_NORMAL, bool SHAPE, class Particles>
-KOKKOS_INLINE_FUNCTION ParticleRates granular_rates_of(const Particles &p, int i, double *vir,
-                                                       double *slide)
-{
-  if (!WALL_NORMAL && !SHAPE && !p.wall_friction && !vir)
-    return granular_rates_without_options(p, i, SumsInLanes<Particles>());
-  if (p.wall_friction)
-    return vir ? granular_rates<WALL_NORMAL, SHAPE, true, true>(p, i, vir, slide)
-               : granular_rates<WALL_NORMAL, SHAPE, false, true>(p, i, vir, slide);
-  return vir ? granular_rates<WALL_NORMAL, SHAPE, true, false>(p, i, vir, slide)
-             : granular_rates<WALL_NORMAL, SHAPE, false, false>(p, i, vir, slide);
-}
-
-// The same with the options fixed at compile time, for a device kernel that holds this one
-// variant of the sums: a kernel's registers are those of its heaviest path, and the
-// variant with every option would make the others spill
+// granular_rates with its options fixed at compile time: a device kernel holds one such
+// variant (a kernel's registers are those of its heaviest path, and the variant with
+// every option would make the others spill); the host's loops too, chosen once per pass
 template <bool WALL_NORMAL, bool SHAPE, bool VIRIAL, bool FRICTION> struct SumVariant {
   template <class Particles>
   KOKKOS_INLINE_FUNCTION static ParticleRates rates(const Particles &p, int i, double *vir,
@@ -506,26 +491,23 @@ struct SumVariantOf<WALL_NORMAL, SHAPE, VIRIAL, FRICTION> {
   }
 };
 
-template <class Particles>
-KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir,
-                                                    double *slide)
+// f(SumVariant<...>()) for the options of p, with the virial if `virial`
+template <class Particles, class F> void with_sum_variant(const Particles &p, bool virial, F &&f)
 {
-  if (p.wall_normal)
-    return p.shape_sums ? granular_rates_of<true, true>(p, i, vir, slide)
-                        : granular_rates_of<true, false>(p, i, vir, slide);
-  return p.shape_sums ? granular_rates_of<false, true>(p, i, vir, slide)
-                      : granular_rates_of<false, false>(p, i, vir, slide);
+  const bool options[4] = {p.wall_normal, p.shape_sums, virial, p.wall_friction};
+  SumVariantOf<>::choose(options, f);
 }
 
-// the variant of the options of p, at run time
-struct SumOptionsOfParticles {
-  template <class Particles>
-  KOKKOS_INLINE_FUNCTION static ParticleRates rates(const Particles &p, int i, double *vir,
-                                                    double *slide)
-  {
-    return granular_rates(p, i, vir, slide);
-  }
-};
+// granular_rates with the options of p, the virial if vir is not null, and with
+// wall/friction the grain's share and slide direction if slide is not null (on the host)
+template <class Particles>
+ParticleRates granular_rates(const Particles &p, int i, double *vir, double *slide)
+{
+  ParticleRates r;
+  with_sum_variant(p, vir != nullptr,
+                   [&](auto variant) { r = decltype(variant)::rates(p, i, vir, slide); });
+  return r;
+}
 
 // The viscous-pressure diagnostic of granular particle i (compute sph/visc/atom): the
 // kernel-weighted mean over its neighbours of rho_i rho_j Pi_ij / 2, the pressure that,

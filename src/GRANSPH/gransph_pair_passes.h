@@ -133,9 +133,8 @@ KOKKOS_INLINE_FUNCTION void add_dummy_force(const Particles &p, int d, bool has_
 // Grain i's rates into the state and its mass times its acceleration into f; its virial
 // into vir and how it slides on walls with a friction of their own into slide (each if
 // not null). corrected: the renormalised velocity gradient (in dim dimensions). Sums: the
-// variant of the neighbour sums, chosen at run time by default (a device kernel takes a
-// SumVariant of its own)
-template <class Sums = SumOptionsOfParticles, class Particles, class State, class Forces>
+// variant of the neighbour sums (SumVariant, chosen once per pass: with_sum_variant)
+template <class Sums, class Particles, class State, class Forces>
 KOKKOS_INLINE_FUNCTION void add_grain_rates(const Particles &p, int i, double mass,
                                             const State &state, const Forces &f, double ftm2v,
                                             bool corrected, int dim, double *vir, double *slide)

@@ -364,16 +364,19 @@ template <class Particles> void PairSPHGranular::grains(const Particles &p)
   const int inum = list->inum;
   const int *ilist = list->ilist;
   const GRANSPH::HostRows<3> f{atom->f[0]};
-  for (int ii = 0; ii < inum; ++ii) {
-    const int i = ilist[ii];
-    if (!p.granular(i)) continue;
-    double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    GRANSPH::add_grain_rates(p, i, particles[i].mass, state, f, force->ftm2v,
-                             config.corrected_gradient, domain->dimension,
-                             vflag_either ? vir : nullptr,
-                             p.wall_friction ? &slide[SLIDE * i] : nullptr);
-    if (vflag_either) tally_virial(i, vir);
-  }
+  GRANSPH::with_sum_variant(p, vflag_either, [&](auto variant) {
+    using Sums = decltype(variant);
+    for (int ii = 0; ii < inum; ++ii) {
+      const int i = ilist[ii];
+      if (!p.granular(i)) continue;
+      double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+      GRANSPH::add_grain_rates<Sums>(p, i, particles[i].mass, state, f, force->ftm2v,
+                                     config.corrected_gradient, domain->dimension,
+                                     vflag_either ? vir : nullptr,
+                                     p.wall_friction ? &slide[SLIDE * i] : nullptr);
+      if (vflag_either) tally_virial(i, vir);
+    }
+  });
   if (sums_viscous_pressure()) viscous_pressures(p);
 }
 

@@ -415,9 +415,8 @@ template <class Particles>
 void PairSPHGranularKokkos<DeviceType>::grains(const Particles &p)
 {
   const bool limited = p.wall_friction;
-  const bool options[4] = {p.wall_normal, p.shape_sums, vflag_either != 0, limited};
   EV_FLOAT ev;
-  GRANSPH::SumVariantOf<>::choose(options, [&](auto variant) {
+  GRANSPH::with_sum_variant(p, vflag_either, [&](auto variant) {
     ev = this->template grains_of<decltype(variant)>(p);
   });
   if (vflag_global)

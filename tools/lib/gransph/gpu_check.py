@@ -363,6 +363,15 @@ def smoke_run(bundle):
         return ranks_smoke_run(bundle, env, tmp)
 
 
+def dump_comparison(a, b):
+    """two dumps of the same atoms: each column's largest relative difference
+    (gransph_run.dump_differences), the worst column, and a phrase that says it"""
+    import gransph_run
+    diffs = {c: float(v) for c, v in gransph_run.dump_differences(a, b).items()}
+    worst = max(diffs, key=diffs.get)
+    return diffs, worst, (f"worst {worst} {diffs[worst]:.2e}" if diffs[worst] else "the same to the bit")
+
+
 def ranks_smoke_run(bundle, env, tmp):
     """The ranks stage's comparison with the plain styles: the column at dx 0.04 on 1 and
     on 2 ranks of the bundle's Open MPI, per atom to TOLERANCE. Problems (empty: agree)."""
@@ -382,12 +391,9 @@ def ranks_smoke_run(bundle, env, tmp):
     moved = float(max(abs(states[1]["vx"]).max(), abs(states[1]["vz"]).max()))
     if moved == 0.0:
         return ["the column did not move in 100 steps: nothing was compared"]
-    diffs = gransph_run.dump_differences(states[1], states[2])
-    worst = max(diffs, key=diffs.get)
+    diffs, worst, phrase = dump_comparison(states[1], states[2])
     say(f"  plain styles, 100 steps of the column at dx 0.04 (largest speed {moved:.2g} m/s) on 2"
-        f" ranks of the bundle's mpirun against 1: " + (f"worst {worst} {diffs[worst]:.1e}" if diffs[worst]
-                                                        else "the same to the bit")
-        + f" (tolerance {TOLERANCE:g})")
+        f" ranks of the bundle's mpirun against 1: {phrase} (tolerance {TOLERANCE:g})")
     return [] if diffs[worst] <= TOLERANCE else [f"2 ranks differ from 1 by {diffs[worst]:.1e} in {worst}"]
 
 
@@ -619,14 +625,13 @@ def compare(runner, result):
             continue
         gpu, cpu = states["gpu"], states["cpu"]
         moved = float(np.max(np.abs(cpu["vx"])))
-        diffs = {c: float(v) for c, v in gransph_run.dump_differences(cpu, gpu).items()}
-        worst = max(diffs, key=diffs.get)
+        diffs, worst, phrase = dump_comparison(cpu, gpu)
         ok = moved > 1e-3 and (mixed or diffs[worst] <= TOLERANCE)
         entry.update(atoms=len(cpu["id"]), max_relative_difference=diffs, worst=worst, ok=ok)
         agree = agree and ok
         verdict = ("reported (single-precision sums)" if mixed else "agree" if ok else "DO NOT AGREE")
         say(f"  {label}: {len(cpu['id'])} particles, GPU {entry['gpu_s']:.1f} s, CPU {entry['cpu_s']:.1f} s:"
-            f" worst {worst} {diffs[worst]:.2e}: {verdict}"
+            f" {phrase}: {verdict}"
             + ("" if moved > 1e-3 else "; nothing moved: nothing was compared"))
     return agree
 
@@ -897,13 +902,11 @@ def two_ranks(runner, result):
             _, entry[f"ranks{ranks}_s"], _ = runner.run(name, {**RANKS_COMPARE, "dump": 1}, KOKKOS_GPU,
                                                         timeout=RUN_S, wrapper=wrapper)
             states[ranks] = gransph_run.read_dump(os.path.join(runner.work, name, "column_collapse.dump"))
-        diffs = gransph_run.dump_differences(states[1], states[2])
-        worst = max(diffs, key=diffs.get)
+        diffs, worst, phrase = dump_comparison(states[1], states[2])
         entry.update(atoms=len(states[1]["id"]), max_relative_difference=diffs, worst=worst,
                      ok=diffs[worst] <= TOLERANCE)
         say(f"  column dx {RANKS_COMPARE['dx']}, {RANKS_COMPARE['steps']} steps, {entry['atoms']} particles:"
-            f" 2 ranks against 1, " + (f"worst {worst} {diffs[worst]:.2e}" if diffs[worst] else "the same to the bit")
-            + f": {'agree' if entry['ok'] else 'DO NOT AGREE'}")
+            f" 2 ranks against 1, {phrase}: {'agree' if entry['ok'] else 'DO NOT AGREE'}")
         case, label, variables, steps = RANKS_TIMING
         out, wall, _ = runner.run(f"ranks2_{case}_{label}", {**variables, "steps": steps}, KOKKOS_GPU,
                                   script=os.path.join(TOP, bench.INPUTS[case]), timeout=2 * RUN_S,
