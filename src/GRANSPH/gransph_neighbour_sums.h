@@ -86,15 +86,18 @@ KOKKOS_INLINE_FUNCTION bool has_coincident_neighbour(const Particles &p, int i)
 }
 
 // The neighbours of particle i that enter its sums (a grain's grains and dummies, a
-// dummy's grains) closer than sqrt(cutsq), written to out(0), out(1), ...; their number.
-// The pair style's pruned rows (its keyword `prune`): the sums' lanes then carry no
-// neighbour that would add zeros. x(j, a) are the positions, a dense copy (the particles'
-// records are four times longer, and the loop waits on their loads). Without branches,
-// so that on a GPU the warp stays together; out(m) takes every neighbour and keeps those
-// that count.
+// dummy's grains) closer than sqrt(cutsq), moved to the front of its row in the row's
+// order; their number. The pair style's pruned rows (its keyword `prune`): the sums' lanes
+// then carry no neighbour that would add zeros. The row keeps every neighbour (the others
+// behind them), so that the next pruning before a list build finds them all: the pruned
+// rows take no memory of their own. entry(k) is the row's k-th entry as stored (special
+// bits and all), which the swaps move whole. x(j, a) are the positions, a dense copy (the
+// particles' records are four times longer, and the loop waits on their loads). Without
+// branches, so that on a GPU the warp stays together: each neighbour is swapped with the
+// first one that does not count (none before it: itself).
 template <class Particles, class Positions, class Row>
 KOKKOS_INLINE_FUNCTION int prune_row(const Particles &p, int i, const Positions &x,
-                                     double cutsq, const Row &out)
+                                     double cutsq, const Row &entry)
 {
   const bool i_granular = p.granular(i);
   if (!i_granular && !p.wall(i)) return 0;
@@ -103,10 +106,12 @@ KOKKOS_INLINE_FUNCTION int prune_row(const Particles &p, int i, const Positions 
   const auto neighbours = p.neighbours(i);
   int m = 0;
   for (int k = 0; k < n; ++k) {
-    const int j = neighbours(k);
+    const int j = neighbours(k);    // entry k is as listed: the swaps so far moved [0, k)
     const double rx = xi - x(j, 0), ry = yi - x(j, 1), rz = zi - x(j, 2);
     const bool enters = p.granular(j) || (i_granular && p.wall(j));
-    out(m) = j;
+    const int listed = entry(k);
+    entry(k) = entry(m);
+    entry(m) = listed;
     m += enters && rx * rx + ry * ry + rz * rz < cutsq;
   }
   return m;

@@ -155,7 +155,7 @@ void PairSPHGranular::pruned_anew(int nall)
   pvector[0] += 1.0;
 }
 
-// p over rows pruned from its rows (GRANSPH::prune_row), made anew when outdated or when
+// p over its rows pruned in place (GRANSPH::prune_row), pruned anew when outdated or when
 // an atom has moved too far
 template <class Particles> Particles PairSPHGranular::pruned(const Particles &p, int nall)
 {
@@ -174,24 +174,16 @@ template <class Particles> Particles PairSPHGranular::pruned(const Particles &p,
   if (anew) {
     pruned_anew(nall);
     pruned_x.assign(x, x + 3 * nall);
-    const int nlocal = atom->nlocal;
-    pruned_first.assign(nlocal, nullptr);
-    pruned_count.assign(nlocal, 0);
-    size_t room = 0;
-    for (int ii = 0; ii < list->inum; ++ii) room += p.num_neighbours(list->ilist[ii]);
-    if (pruned_index.size() < room) pruned_index.resize(room);
+    pruned_count.assign(atom->nlocal, 0);
     const double cutsq = pruned_cutsq();
-    int *row = pruned_index.data();
     for (int ii = 0; ii < list->inum; ++ii) {
       const int i = list->ilist[ii];
-      pruned_first[i] = row;
+      int *row = list->firstneigh[i];
       pruned_count[i] =
           GRANSPH::prune_row(p, i, now_at, cutsq, [row](int k) -> int & { return row[k]; });
-      row += p.num_neighbours(i);
     }
   }
   Particles q = p;
-  q.firstneigh = pruned_first.data();
   q.numneigh = pruned_count.data();
   return q;
 }
@@ -448,8 +440,7 @@ double PairSPHGranular::memory_usage()
   if (normals) bytes += (double) nmax * 3 * sizeof(double);
   if (friction) bytes += (double) nmax * (1 + SLIDE) * sizeof(double);
   bytes += (double) visc_pressure.capacity() * sizeof(double);
-  bytes += (double) (pruned_index.capacity() + pruned_count.capacity()) * sizeof(int);
-  bytes += (double) pruned_first.capacity() * sizeof(int *);
+  bytes += (double) pruned_count.capacity() * sizeof(int);
   bytes += (double) pruned_x.capacity() * sizeof(double);
   return bytes;
 }

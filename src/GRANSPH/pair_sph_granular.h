@@ -111,10 +111,9 @@ class PairSPHGranular : public Pair {
   double *friction;   // with wall/friction: pack_wall_friction()
   double *slide;      // with wall/friction: 4 per atom, a grain's share and slide direction
   std::vector<double> visc_pressure;    // owned atoms: viscous_pressure()
-  // with prune: owned atoms' rows (pruned_first, pruned_count) in pruned_index, made from
-  // the positions pruned_x (owned and ghost atoms, 3 each)
-  std::vector<int> pruned_index, pruned_count;
-  std::vector<int *> pruned_first;
+  // with prune: how many neighbours at the front of each owned atom's row of the list
+  // count (GRANSPH::prune_row), found at the positions pruned_x (owned and ghost, 3 each)
+  std::vector<int> pruned_count;
   std::vector<double> pruned_x;
 
   void grow(int n);

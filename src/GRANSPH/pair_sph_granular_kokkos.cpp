@@ -367,7 +367,7 @@ PairSPHGranularKokkos<DeviceType>::pack_particles_single(int n)
   return single;
 }
 
-// as PairSPHGranular::pruned, in place; moved_sq: the largest squared distance since the
+// as PairSPHGranular::pruned, on p itself; moved_sq: the largest squared distance since the
 // last pruning
 template <class DeviceType>
 void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &p, int nall,
@@ -380,10 +380,6 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
     if ((int) d_pruned_x.extent(0) < nall)
       d_pruned_x = decltype(d_pruned_x)(
           Kokkos::view_alloc(Kokkos::WithoutInitializing, "pair:pruned_x"), atom->nmax);
-    if (d_pruned.extent(0) != k_list->d_neighbors.extent(0) ||
-        d_pruned.extent(1) != k_list->d_neighbors.extent(1))
-      d_pruned = decltype(d_pruned)(Kokkos::view_alloc(Kokkos::WithoutInitializing, "pair:pruned"),
-                                    k_list->d_neighbors.extent(0), k_list->d_neighbors.extent(1));
     if (d_pruned_count.extent(0) < k_list->d_neighbors.extent(0))
       d_pruned_count = decltype(d_pruned_count)("pair:pruned_count", k_list->d_neighbors.extent(0));
     pruned_anew(nall);
@@ -393,7 +389,7 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
           for (int a = 0; a < 3; ++a) x0(i, a) = x(i, a);
         });
     auto ilist = k_list->d_ilist;
-    auto rows = d_pruned;
+    auto rows = k_list->d_neighbors;
     auto count = d_pruned_count;
     const double cutsq = pruned_cutsq();
     const DeviceParticles<DeviceType> listed = p;
@@ -405,7 +401,6 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
               GRANSPH::prune_row(listed, i, x0, cutsq, Kokkos::subview(rows, i, Kokkos::ALL));
         });
   }
-  p.neighbors = d_pruned;
   p.numneigh = d_pruned_count;
 }
 
@@ -495,7 +490,7 @@ template <class DeviceType> double PairSPHGranularKokkos<DeviceType>::memory_usa
       d_particles_single.span() * sizeof(GRANSPH::PairParticleSingle) +
       (k_normals.extent(0) + k_friction.extent(0) + k_slide.extent(0) +
        k_visc_pressure.extent(0) + d_pruned_x.span()) * sizeof(double) +
-      (d_pruned.span() + d_pruned_count.span()) * sizeof(int);
+      d_pruned_count.span() * sizeof(int);
 }
 
 namespace LAMMPS_NS {

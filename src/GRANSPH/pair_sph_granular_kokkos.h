@@ -73,9 +73,8 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   Kokkos::DualView<double *, DeviceType> k_slide;
   // owned atoms: viscous_pressure()
   Kokkos::DualView<double *, DeviceType> k_visc_pressure;
-  // with prune: the owned atoms' pruned rows, made from the positions pruned_x of the
-  // owned and ghost atoms
-  typename AT::t_neighbors_2d d_pruned;
+  // with prune: how many neighbours at the front of each owned atom's row of the list
+  // count, found at the positions pruned_x of the owned and ghost atoms
   typename AT::t_int_1d d_pruned_count;
   Kokkos::View<double *[3], DeviceType> d_pruned_x;
 
