@@ -376,29 +376,45 @@ void FixSPHIntegrate::forget_steps()
   for (int i = 0; i < atom->nlocal; ++i) start[i][STEPPED] = 0.0;
 }
 
+// The values of atom i that the setup evaluation overwrites (StateLayout), copied to
+// `kept` or, with back, from it: a grain's rates, a dummy particle's stress and wall
+// history; KEPT_PER_ATOM values either way
+void FixSPHIntegrate::keep_evaluated(int i, double *kept, bool back)
+{
+  const auto copy = [back](double *column, double *copied, int n) {
+    for (int k = 0; k < n; ++k) (back ? column[k] : copied[k]) = back ? copied[k] : column[k];
+  };
+  if (atom->mask[i] & groupbit)
+    copy(rates[i], kept, NEVALUATED_RATES);
+  else if (atom->mask[i] & wallbit) {
+    copy(&state[i][SIGMA], kept, 6);
+    copy(&start[i][WALL_V], kept + 6, NWALL_HISTORY);
+  }
+}
+
 void FixSPHIntegrate::save_step()
 {
   const int nlocal = atom->nlocal;
-  const int size = row_size();
-  saved.resize((size_t) nlocal * size);
-  for (int i = 0; i < nlocal; ++i) pack_row(i, &saved[(size_t) i * size]);
+  saved.resize((size_t) nlocal * KEPT_PER_ATOM);
+  for (int i = 0; i < nlocal; ++i) keep_evaluated(i, &saved[(size_t) i * KEPT_PER_ATOM], false);
 }
 
-// atoms without a step (created since) keep the rates of the setup evaluation
+// atoms without a step (created since) keep the values of the setup evaluation
 void FixSPHIntegrate::restore_step()
 {
-  const int size = row_size();
-  const int nrows = MIN(atom->nlocal, (int) (saved.size() / size));
+  const int nrows = MIN(atom->nlocal, (int) (saved.size() / KEPT_PER_ATOM));
   bigint fresh[2] = {0, 0};    // grains without a step, all grains
   for (int i = 0; i < nrows; ++i) {
-    const double *row = &saved[(size_t) i * size];
+    double *kept = &saved[(size_t) i * KEPT_PER_ATOM];
     const bool grain = atom->mask[i] & groupbit;
+    // a grain's STEPPED is the integrator's, a dummy particle's the evaluation's: kept
+    const double stepped = grain ? start[i][STEPPED] : kept[6 + STEPPED - WALL_V];
     fresh[1] += grain;
-    if (row[NSTATE + nrates + STEPPED] == 0.0) {
+    if (stepped == 0.0) {
       fresh[0] += grain;
       continue;
     }
-    unpack_row(i, row);
+    keep_evaluated(i, kept, true);
   }
   std::vector<double>().swap(saved);
   bigint total[2];

@@ -132,7 +132,10 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   bool ran_with_pair_settings;                // false: no run yet
   GRANSPH::PairSettings last_pair_settings;
   const char *fresh_start;                   // why this run cannot continue, or nullptr
-  std::vector<double> saved;                 // the arrays across the setup evaluation
+  // across the setup evaluation of a run that continues the last: what it overwrites
+  static constexpr int KEPT_PER_ATOM = 6 + NWALL_HISTORY;
+  static_assert(KEPT_PER_ATOM >= NEVALUATED_RATES, "a grain's rates fit");
+  std::vector<double> saved;
 
   void add_material(const std::string &group_name, const std::string &file,
                     const std::string &name, const std::string &own_file,
@@ -142,6 +145,7 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   void init_geostatic_stress();
   const char *why_not_continue() const;
   void forget_steps();
+  void keep_evaluated(int i, double *kept, bool back);
   void save_step();
   void restore_step();
   // an atom's row of all per-atom values (row_size()), as exchange and restart carry it

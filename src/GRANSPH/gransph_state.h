@@ -49,6 +49,9 @@ struct StateLayout {
     WALL_F = 14,
     NSTART = 17
   };
+  // what a pair evaluation writes of an atom: a grain's rates before ACC; a dummy
+  // particle's stress and its wall history from WALL_V on (STEPPED among it)
+  enum { NEVALUATED_RATES = ACC, NWALL_HISTORY = NSTART - WALL_V };
 };
 
 // A per-atom array of STRIDE values per atom, as its rows from the first: atom i's column c
