@@ -30,6 +30,7 @@
 #include "thermo.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -382,7 +383,10 @@ void FixSPHIntegrate::forget_steps()
 void FixSPHIntegrate::keep_evaluated(int i, double *kept, bool back)
 {
   const auto copy = [back](double *column, double *copied, int n) {
-    for (int k = 0; k < n; ++k) (back ? column[k] : copied[k]) = back ? copied[k] : column[k];
+    if (back)
+      std::copy(copied, copied + n, column);
+    else
+      std::copy(column, column + n, copied);
   };
   if (atom->mask[i] & groupbit)
     copy(rates[i], kept, NEVALUATED_RATES);
