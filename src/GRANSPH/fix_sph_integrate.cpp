@@ -53,7 +53,7 @@ const GRANSPH::PairSettings *pair_settings(Force *force)
 constexpr double RECORD_FOLLOWS = -1.0;
 }    // namespace
 
-FixSPHIntegrate &FixSPHIntegrate::find(LAMMPS *lmp, const std::string &who)
+FixSPHIntegrate &FixSPHIntegrate::find(LAMMPS *lmp, const char *who)
 {
   FixSPHIntegrate *found =
       GRANSPH::find_only_fix<FixSPHIntegrate>(lmp, who, "GRANSPH integrators");
@@ -231,7 +231,7 @@ void FixSPHIntegrate::init()
     error->all(FLERR, "Fix {} requires pair_style sph/granular", style);
   if (update->whichflag == 1 && utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix {} does not support run_style respa", style);
-  find(lmp, std::string("Fix ") + style);    // the only one
+  find(lmp, (std::string("Fix ") + style).c_str());    // the only one
 
   bool inflow = false;
   for (int i = 0; i < modify->nfix; ++i) inflow |= utils::strmatch(modify->fix[i]->style, "^sph/inflow");

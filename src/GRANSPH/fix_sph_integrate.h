@@ -43,7 +43,7 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   FixSPHIntegrate(class LAMMPS *, int, char **);
   // The GRANSPH integrator fix: an error that names `who` (e.g. "Compute sph/runout") if
   // there is none or more than one
-  static FixSPHIntegrate &find(class LAMMPS *lmp, const std::string &who);
+  static FixSPHIntegrate &find(class LAMMPS *lmp, const char *who);
   ~FixSPHIntegrate() override;
   int setmask() override;
   void init() override;
