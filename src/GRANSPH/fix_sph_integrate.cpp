@@ -392,7 +392,7 @@ void FixSPHIntegrate::keep_evaluated(int i, double *kept, bool back)
     copy(rates[i], kept, NEVALUATED_RATES);
   else if (atom->mask[i] & wallbit) {
     copy(&state[i][SIGMA], kept, 6);
-    copy(&start[i][WALL_V], kept + 6, NWALL_HISTORY);
+    copy(&start[i][STEPPED], kept + 6, NWALL_HISTORY);
   }
 }
 
@@ -412,7 +412,7 @@ void FixSPHIntegrate::restore_step()
     double *kept = &saved[(size_t) i * KEPT_PER_ATOM];
     const bool grain = atom->mask[i] & groupbit;
     // a grain's STEPPED is the integrator's, a dummy particle's the evaluation's: kept
-    const double stepped = grain ? start[i][STEPPED] : kept[6 + STEPPED - WALL_V];
+    const double stepped = grain ? start[i][STEPPED] : kept[6];
     fresh[1] += grain;
     if (stepped == 0.0) {
       fresh[0] += grain;
@@ -695,8 +695,10 @@ int FixSPHIntegrate::pack_restart(int i, double *buf)
 // Files of the other predictor's layout (a file of `predictor midpoint` read under
 // extrapolated, or the reverse) give the columns both have: the grain's next step
 // extrapolates once its own two mid-points are known. Files written before the viscous
-// pressure left the state (STATE_WITH_VISC columns) are read past that column. Files of
-// earlier versions hold the state only: those atoms start without a step.
+// pressure left the state (STATE_WITH_VISC columns) are read past that column, and those
+// written before a grain's and a dummy particle's start values shared their columns
+// (START_SIDE_BY_SIDE) by read_start_side_by_side. Files of earlier versions hold the
+// state only: those atoms start without a step.
 void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
@@ -710,15 +712,33 @@ void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
   restored = 1;
   for (const int nstate : {NSTATE, STATE_WITH_VISC})
     for (const int nr : {nrates, other_nrates})
-      if (size == nstate + nr + NSTART) {
-        for (int k = 0; k < nrates; ++k)
-          rates[nlocal][k] = k < RATES_DT || nr == nrates ? row[nstate + k] : 0.0;
-        memcpy(start[nlocal], row + nstate + nr, NSTART * sizeof(double));
-        if (nr != nrates) start[nlocal][STEPPED] = fmin(start[nlocal][STEPPED], 1.0);
-        modified_host();
-        return;
-      }
+      for (const int nstart : {int(NSTART), int(START_SIDE_BY_SIDE)})
+        if (size == nstate + nr + nstart) {
+          for (int k = 0; k < nrates; ++k)
+            rates[nlocal][k] = k < RATES_DT || nr == nrates ? row[nstate + k] : 0.0;
+          if (nstart == NSTART)
+            memcpy(start[nlocal], row + nstate + nr, NSTART * sizeof(double));
+          else
+            read_start_side_by_side(nlocal, row + nstate + nr);
+          if (nr != nrates) start[nlocal][STEPPED] = fmin(start[nlocal][STEPPED], 1.0);
+          modified_host();
+          return;
+        }
   modified_host();
+}
+
+// atom i's start values from a row of START_SIDE_BY_SIDE: a grain's start of the step
+// (its first 10), a dummy particle's wall velocity (3), STEPPED, its wall force (3)
+void FixSPHIntegrate::read_start_side_by_side(int i, const double *row)
+{
+  for (int k = 0; k < NSTART; ++k) start[i][k] = 0.0;
+  start[i][STEPPED] = row[13];
+  if (atom->mask[i] & groupbit)
+    std::copy(row, row + 10, &start[i][V_START]);
+  else if (atom->mask[i] & wallbit) {
+    std::copy(row + 10, row + 13, &start[i][WALL_V]);
+    std::copy(row + 14, row + 17, &start[i][WALL_F]);
+  }
 }
 
 int FixSPHIntegrate::size_restart(int /*nlocal*/)

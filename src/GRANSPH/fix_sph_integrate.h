@@ -97,8 +97,8 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
  protected:
   double **state;    // rho, sigma (xx yy zz xy xz yz), regime
   double **rates;    // drho/dt, strain rate (6), spin (xy xz yz), acceleration
-  double **start;    // v, rho, sigma at the start of the step; last wall velocity; stepped;
-                     // last wall force
+  double **start;    // stepped; a grain's v, rho, sigma at the start of the step, or a
+                     // dummy particle's last wall velocity and force
   double cfl;           // CFL factor of eq. 19; 0 keeps the LAMMPS timestep
   int cfl_sound_reference;    // eq. 19's sound speed at rho_init, not at each grain's density
   int predictor_extrapolated;    // the predictor's rates extrapolated to the step's start
@@ -150,6 +150,7 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   void restore_step();
   // an atom's row of all per-atom values (row_size()), as exchange and restart carry it
   int pack_row(int i, double *buf) const;
+  void read_start_side_by_side(int i, const double *row);
   int unpack_row(int i, const double *buf);
 };
 

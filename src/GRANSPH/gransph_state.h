@@ -23,11 +23,13 @@
    the layout and restart files of before): the step whose mid-point they are,
    and from PREV the same for the step before.
 
-   START: the start of the step for the corrector, the wall velocity of the last
-   evaluation, and STEPPED: the number of steps, up to 2, whose evaluation the
-   atom's rates (grains) or wall velocity (dummy particles) come from; WALL_F: the
-   grains' force on a dummy particle in the last evaluation (the pair style's part
-   of its f), which the setup of a run that continues the last repeats.
+   START: STEPPED, the number of steps, up to 2, whose evaluation the atom's rates
+   (grains) or wall velocity (dummy particles) come from; then a grain's start of
+   the step for the corrector, or in the same columns a dummy particle's wall
+   velocity of the last evaluation and WALL_F, the grains' force on it then (the
+   pair style's part of its f), which the setup of a run that continues the last
+   repeats. Restart files written before December 6, 2026 hold both kinds' columns
+   side by side (START_SIDE_BY_SIDE, read by FixSPHIntegrate::unpack_restart).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_STATE_H
@@ -40,18 +42,13 @@ namespace GRANSPH {
 struct StateLayout {
   enum { RHO = 0, SIGMA = 1, REGIME = 7, NSTATE = 8, STATE_WITH_VISC = 9, NCOMM = 7 };
   enum { DRHO = 0, STRAIN = 1, SPIN = 7, ACC = 10, RATES_DT = 13, PREV = 14, NRATES = 28 };
-  enum {
-    V_START = 0,
-    RHO_START = 3,
-    SIGMA_START = 4,
-    WALL_V = 10,
-    STEPPED = 13,
-    WALL_F = 14,
-    NSTART = 17
-  };
+  // a grain's start values, and in the same columns a dummy particle's (WALL_V, WALL_F);
+  // START_SIDE_BY_SIDE: the columns of the restart files that held the two apart
+  enum { STEPPED = 0, V_START = 1, RHO_START = 4, SIGMA_START = 5, NSTART = 11 };
+  enum { WALL_V = 1, WALL_F = 4, START_SIDE_BY_SIDE = 17 };
   // what a pair evaluation writes of an atom: a grain's rates before ACC; a dummy
-  // particle's stress and its wall history from WALL_V on (STEPPED among it)
-  enum { NEVALUATED_RATES = ACC, NWALL_HISTORY = NSTART - WALL_V };
+  // particle's stress and its wall history, STEPPED to WALL_F's last
+  enum { NEVALUATED_RATES = ACC, NWALL_HISTORY = WALL_F + 3 - STEPPED };
 };
 
 // A per-atom array of STRIDE values per atom, as its rows from the first: atom i's column c

@@ -64,9 +64,9 @@ ROW_STATE = 7 * 8        # FixSPHIntegrate::pack_forward_comm: NCOMM = 7 (rho, s
 STATE_COMMS = {"column": 2, "jet": 1}    # PairSPHGranular: one per step, one more after
                          # the walls pass where there are dummy walls (the column's floor)
 ROW_BORDER = 9 * 8       # a ghost at a list build: x, tag, type, mask and v (borders)
-ROW_EXCHANGE = (1 + 10 + 38) * 8    # an atom that changes rank: its size, AtomVec's x, v,
-                         # tag, type, mask, image, and the integrator's 8 + 13 + 17 columns
-ROW_FIX = 38 * 8         # the integrator's per-atom arrays (state, rates, start values)
+ROW_EXCHANGE = (1 + 10 + 32) * 8    # an atom that changes rank: its size, AtomVec's x, v,
+                         # tag, type, mask, image, and the integrator's 8 + 13 + 11 columns
+ROW_FIX = 32 * 8         # the integrator's per-atom arrays (state, rates, start values)
 ROW_STATE_ARRAY = 8 * 8  # the state array a host sync copies whole (NSTATE = 8)
 
 # assumptions (bench/README.md names their sources)
