@@ -562,7 +562,7 @@ void FixSPHIntegrate::init_geostatic_stress()
     Sym3 s = Sym3::iso(k0 * sv);
     if (up == 2) s.zz = sv;
     else s.yy = sv;
-    s.store(&state[i][SIGMA]);
+    host_state().set_sigma(i, s);
   }
 }
 
@@ -576,7 +576,7 @@ void FixSPHIntegrate::check_finite() const
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
     const GRANSPH::ParticleState p{{x[i][0], x[i][1], x[i][2]}, {v[i][0], v[i][1], v[i][2]},
-                                   state[i][RHO], GRANSPH::Sym3::load(state[i], SIGMA)};
+                                   state[i][RHO], host_state().sigma(i)};
     if (GRANSPH::bad_state(p))
       error->one(FLERR,
                  "Fix {}: atom {} has a non-finite state or non-positive density (rho {}, v {} {} "
