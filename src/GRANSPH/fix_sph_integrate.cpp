@@ -306,9 +306,8 @@ void FixSPHIntegrate::setup_pre_force(int /*vflag*/)
   modified_host();
 }
 
-// Before any output of the run. Continuing, the first step uses the rates, the
-// acceleration, the wall velocities and the timestep of the last step, as it would
-// have without the run boundary; otherwise those of the setup evaluation at t.
+// Before any output of the run: a run that continues the last restores its last step
+// (fix_sph_integrate.h); otherwise the first step starts from the setup evaluation at t.
 void FixSPHIntegrate::setup(int /*vflag*/)
 {
   sync_host();

@@ -12,8 +12,7 @@
    (initial_integrate) and the corrector (final_integrate). The paper evaluates
    the rates twice per step, at t for the predictor and at t+dt/2 for the
    corrector. Here the predictor uses the rates of the previous step's mid-point
-   evaluation, t-dt/2 (at the very first step: the setup evaluation at t; a later
-   run continues with those of its last step, see FixSPHIntegrate::setup).
+   evaluation, t-dt/2 (a run's first step: FixSPHIntegrate::setup).
    That changes the predicted mid-point state by O(dt^2), so the corrector, which
    integrates from t with the mid-point rates, stays second order at one rate
    evaluation per step.

@@ -68,10 +68,8 @@ class PairSPHGranular : public Pair {
   int pruned_nall;    // the atoms, owned and ghost, of the last pruning (-1: none)
 
   // The passes of an evaluation over p, the particles as the twin's accessor reads them,
-  // in the one order of both twins: at a run's setup the checks; the dummies' stress (eq.
-  // 8) and, without walls of a friction of their own (limited), the grains' forces on them
-  // (eq. 9); the grains' rates; with such walls, then the dummies' forces. Twin: this style
-  // or its Kokkos twin, whose steps of the same names take the data where it lives.
+  // in the one order of both twins (pair_sph_granular.cpp's header). Twin: this style or
+  // its Kokkos twin, whose steps of the same names take the data where it lives.
   template <class Twin, class Particles>
   void evaluate_passes(Twin &twin, const Particles &p, bool limited);
 
