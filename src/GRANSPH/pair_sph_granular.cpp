@@ -300,13 +300,18 @@ void PairSPHGranular::tally_virial(int i, const double *vir)
     for (int k = 0; k < 6; ++k) vatom[i][k] += vir[k];
 }
 
-// dummy-particle stresses (eq. 8), with the wall acceleration from the velocity change
-// since the last evaluation, and with_forces the grains' forces on them (eq. 9), which
-// need a wall's own new stress only
-template <class Particles> void PairSPHGranular::walls(const Particles &p, bool with_forces)
+// The dummy particles: with `stress` their stress (eq. 8), with the wall acceleration
+// from the velocity change since the last evaluation; with `forces` the grains' force on
+// them (eq. 9; none without granular neighbours, which only the stress sums tell), or the
+// last step's at the setup of a run that continues it, and its virial. A dummy's force
+// needs its own new stress only: one pass does both, unless the forces wait for how the
+// grains slide on walls with a friction of their own.
+template <class Particles> void PairSPHGranular::walls(const Particles &p, bool stress, bool forces)
 {
   FixSPHIntegrate &fix = *integrator;
   const FixSPHIntegrate::HostState state = fix.host_state();
+  const GRANSPH::HostRows<3> f{atom->f[0]};
+  const bool repeat = repeats_last_wall_forces();
   const int inum = list->inum;
   const int *ilist = list->ilist;
   double **v = atom->v;
@@ -316,37 +321,22 @@ template <class Particles> void PairSPHGranular::walls(const Particles &p, bool 
   for (int ii = 0; ii < inum; ++ii) {
     const int d = ilist[ii];
     if (!p.wall(d)) continue;
-    const GRANSPH::WallSums sums =
-        GRANSPH::dummy_stress(p, state, d, v[d], g, inv_dt, config.wall_stress, particles[d].sigma);
-    if (with_forces) add_wall_force(p, d, sums.has_neighbours());
+    bool has_grains = true;
+    if (stress)
+      has_grains = GRANSPH::dummy_stress(p, state, d, v[d], g, inv_dt, config.wall_stress,
+                                         particles[d].sigma)
+                       .has_neighbours();
+    if (!forces) continue;
+    double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    GRANSPH::add_dummy_force(p, d, has_grains, state, f, force->ftm2v, repeat,
+                             vflag_either ? vir : nullptr);
+    if (vflag_either) tally_virial(d, vir);
   }
-}
-
-// the force of the grains on dummy particle d (eq. 9; none without granular neighbours),
-// or the last step's at the setup of a run that continues it, and its virial
-template <class Particles>
-void PairSPHGranular::add_wall_force(const Particles &p, int d, bool has_grains)
-{
-  double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  GRANSPH::add_dummy_force(p, d, has_grains, integrator->host_state(),
-                           GRANSPH::HostRows<3>{atom->f[0]}, force->ftm2v,
-                           repeats_last_wall_forces(), vflag_either ? vir : nullptr);
-  if (vflag_either) tally_virial(d, vir);
 }
 
 bool PairSPHGranular::repeats_last_wall_forces() const
 {
   return update->setupflag && integrator->continues_last_step();
-}
-
-// the grains' forces on the dummy particles (eq. 9), once it is known how the grains
-// slide on the walls with a friction of their own (wall/friction)
-template <class Particles> void PairSPHGranular::wall_forces(const Particles &p)
-{
-  for (int ii = 0; ii < list->inum; ++ii) {
-    const int d = list->ilist[ii];
-    if (p.wall(d)) add_wall_force(p, d, true);
-  }
 }
 
 // rates of the granular particles (eqs. 6, 7, 34, 35)

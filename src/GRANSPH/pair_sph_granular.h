@@ -119,9 +119,7 @@ class PairSPHGranular : public Pair {
   const GRANSPH::PairParticleSingle *pack_particles_single(int n);
   template <class Particles> void check_no_coincident(const Particles &p);
 
-  template <class Particles> void walls(const Particles &p, bool with_forces);
-  template <class Particles> void wall_forces(const Particles &p);
-  template <class Particles> void add_wall_force(const Particles &p, int d, bool has_grains);
+  template <class Particles> void walls(const Particles &p, bool stress, bool forces);
   template <class Particles> void grains(const Particles &p);
   template <class Particles> Particles pruned(const Particles &p, int nall);
   template <class Particles> void viscous_pressures(const Particles &p);
@@ -137,7 +135,7 @@ void PairSPHGranular::evaluate_passes(Twin &twin, const Particles &p, bool limit
     if (fix.wallbit) twin.check_wall_spacing();
   }
   if (fix.wallbit) {
-    twin.walls(p, !limited);
+    twin.walls(p, true, !limited);
     fix.forward_comm_state();    // the ghosts get the dummies' new stress
     twin.pack_particles(atom->nlocal, nall);
   }
@@ -148,7 +146,7 @@ void PairSPHGranular::evaluate_passes(Twin &twin, const Particles &p, bool limit
     twin.grains(p);
   if (limited) {
     forward_comm_friction_slide();
-    twin.wall_forces(p);
+    twin.walls(p, false, true);
   }
 }
 
