@@ -240,12 +240,10 @@ void FixSPHIntegrate::init()
                "create_atoms place none? a region outside the box, or sand above it)",
                style, group->names[igroup]);
 
-  int overlap = 0;
-  for (int i = 0; i < atom->nlocal; ++i)
-    if ((atom->mask[i] & groupbit) && (atom->mask[i] & wallbit)) overlap = 1;
-  int any = 0;
-  MPI_Allreduce(&overlap, &any, 1, MPI_INT, MPI_MAX, world);
-  if (any) error->all(FLERR, "Fix {}: an atom is in both the fix group and the walls group", style);
+  const int *mask = atom->mask;
+  const auto in_both = [&](int i) { return (mask[i] & groupbit) && (mask[i] & wallbit); };
+  if (GRANSPH::any_owned_atom(lmp, in_both))
+    error->all(FLERR, "Fix {}: an atom is in both the fix group and the walls group", style);
   check_material_groups();
 }
 
@@ -357,12 +355,9 @@ void FixSPHIntegrate::stop_if_atoms_lost() const
 // nullptr if this run can continue with the rates of the last step, or the reason
 const char *FixSPHIntegrate::why_not_continue() const
 {
-  int local = 0;
-  for (int i = 0; i < atom->nlocal && !local; ++i)
-    local = (atom->mask[i] & groupbit) && start[i][STEPPED] != 0.0;
-  int any = 0;
-  MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, world);
-  if (!any) return "no previous step";
+  const int *mask = atom->mask;
+  const auto stepped = [&](int i) { return (mask[i] & groupbit) && start[i][STEPPED] != 0.0; };
+  if (!GRANSPH::any_owned_atom(lmp, stepped)) return "no previous step";
   const GRANSPH::PairSettings *settings = pair_settings(force);
   if (!settings || !ran_with_pair_settings || !settings->same_rates(last_pair_settings))
     return "the pair style settings changed since the last step";

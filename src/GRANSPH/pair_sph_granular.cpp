@@ -28,6 +28,7 @@
 #include "fix_sph_normals.h"
 #include "force.h"
 #include "group.h"
+#include "gransph_find_fix.h"
 #include "gransph_lammps_compat.h"
 #include "gransph_pair_passes.h"
 #include "memory.h"
@@ -464,9 +465,7 @@ int PairSPHGranular::pack_wall_friction(double *out, const double *unit_normals,
 // with a friction of its own without a normal (owned index i >= 0)
 void PairSPHGranular::stop_if_unnormalled(int i)
 {
-  int mine = i >= 0, any = 0;
-  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
-  if (!any) return;
+  if (!GRANSPH::any_rank(world, i >= 0)) return;
   if (i >= 0)
     error->one(FLERR,
                "Pair style sph/granular: dummy particle {} of a wall/friction group has no wall "
@@ -643,11 +642,9 @@ void PairSPHGranular::init_style()
     const int igroup = config.friction[k].group;
     if (!group->names[igroup])
       error->all(FLERR, "Pair style sph/granular: a wall/friction group was deleted");
-    bigint local = 0, dummies = 0;
-    for (int i = 0; i < atom->nlocal; ++i)
-      local += (atom->mask[i] & group->bitmask[igroup]) && (atom->mask[i] & integrator->wallbit);
-    MPI_Allreduce(&local, &dummies, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-    if (integrator->wallbit && dummies == 0)
+    const int bits = group->bitmask[igroup] | integrator->wallbit;
+    const auto dummy_of_group = [&](int i) { return (atom->mask[i] & bits) == bits; };
+    if (integrator->wallbit && !GRANSPH::any_owned_atom(lmp, dummy_of_group))
       error->all(FLERR,
                  "Pair style sph/granular: wall/friction group {} holds no dummy particle of the "
                  "walls group of fix {}",
