@@ -320,12 +320,8 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     }
   }
   if (VIRIAL) {
-    vir[0] += v0;
-    vir[1] += v1;
-    vir[2] += v2;
-    vir[3] += v3;
-    vir[4] += v4;
-    vir[5] += v5;
+    const double sums[6] = {v0, v1, v2, v3, v4, v5};
+    for (int k = 0; k < 6; ++k) vir[k] += sums[k];
   }
   return r;
 }
@@ -688,12 +684,8 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
   force[1] = fy;
   force[2] = fz;
   if (VIRIAL) {
-    vir[0] += v0;
-    vir[1] += v1;
-    vir[2] += v2;
-    vir[3] += v3;
-    vir[4] += v4;
-    vir[5] += v5;
+    const double sums[6] = {v0, v1, v2, v3, v4, v5};
+    for (int k = 0; k < 6; ++k) vir[k] += sums[k];
   }
 }
 
