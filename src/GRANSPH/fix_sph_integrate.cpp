@@ -489,7 +489,9 @@ void FixSPHIntegrate::reset_cfl_timestep()
   // the fastest sound of all materials (of a material without grains: none, at DBL_MAX)
   double c = 0.0;
   for (int k = 0; k < materials.n; ++k) {
-    const double rho = GRANSPH::cfl_density(-global[1 + k], materials.rho_init[k], cfl_sound_reference);
+    // the grains' lowest density, or under cfl/sound reference the initial one: a dilated grain,
+    // whose few and distant neighbours make it no stiffer, does not shorten the step
+    const double rho = cfl_sound_reference ? materials.rho_init[k] : -global[1 + k];
     c = MAX(c, GRANSPH::sound_speed(materials.E[k], rho));
   }
   set_timestep(GRANSPH::cfl_timestep(cfl, smoothing_length(), sqrt(global[0]) * force->ftm2v, c));

@@ -125,15 +125,6 @@ KOKKOS_INLINE_FUNCTION bool bad_state(const ParticleState &p)
   return !(sum - sum == 0.0) | !(p.rho > 0.0);
 }
 
-// The density of eq. 19's largest sound speed sqrt(E / rho): the grains' lowest, rho_min
-// (local), or the material's initial density (reference: a dilated grain, whose few and
-// distant neighbours make it no stiffer, does not shorten the step). Only local needs a
-// pass over the grains for it.
-KOKKOS_INLINE_FUNCTION double cfl_density(double rho_min, double rho_ref, bool reference)
-{
-  return reference ? rho_ref : rho_min;
-}
-
 /* ----------------------------------------------------------------------
    One grain's predictor or corrector step, written once for the plain
    integrators (a vectorised loop over the grains) and their Kokkos twins (a
