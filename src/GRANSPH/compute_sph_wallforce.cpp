@@ -22,6 +22,7 @@
 #include "fix_sph_integrate.h"
 #include "force.h"
 #include "gransph_find_fix.h"
+#include "gransph_tensor.h"
 #include "group.h"
 #include "modify.h"
 #include "update.h"
@@ -39,7 +40,7 @@ ComputeSPHWallForce::ComputeSPHWallForce(LAMMPS *lmp, int narg, char **arg) :
 {
   if (narg != 6) error->all(FLERR, "Illegal compute sph/wallforce command: expected nx ny nz");
   for (int a = 0; a < 3; ++a) normal[a] = utils::numeric(FLERR, arg[3 + a], false, lmp);
-  const double norm = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+  const double norm = GRANSPH::norm3(normal);
   if (norm == 0.0) error->all(FLERR, "Compute sph/wallforce: normal nx ny nz must be non-zero");
   if (domain->dimension == 2 && normal[2] != 0.0)
     error->all(FLERR, "Compute sph/wallforce: normal must have nz = 0 for a 2d simulation");
@@ -96,7 +97,7 @@ void ComputeSPHWallForce::compute_vector()
 {
   invoked_vector = update->ntimestep;
   total_force(vector);
-  vector[3] = vector[0] * normal[0] + vector[1] * normal[1] + vector[2] * normal[2];
+  vector[3] = GRANSPH::dot3(vector, normal);
 }
 
 void ComputeSPHWallForce::total_force(double *f)

@@ -508,7 +508,7 @@ void FixSPHIntegrate::cfl_maxima(double *local)
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
     const double m = rmass ? rmass[i] : mass[type[i]];
-    const double a2 = (f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]) / (m * m);
+    const double a2 = GRANSPH::dot3(f[i], f[i]) / (m * m);
     local[0] = MAX(local[0], a2);
     if (cfl_sound_reference) continue;
     const int k = materials.of(mask[i]);
@@ -546,7 +546,7 @@ void FixSPHIntegrate::init_geostatic_stress()
   double g[3];
   gravity_vector(g);
   const int up = domain->dimension == 3 ? 2 : 1;
-  const double gmag = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  const double gmag = GRANSPH::norm3(g);
   if (gmag == 0.0) error->all(FLERR, "Fix {} geostatic needs a fix gravity", style);
   const double k0 = material_records[0].nu / (1.0 - material_records[0].nu);
   const double rho_init = materials.rho_init[0];

@@ -6,7 +6,8 @@
 
 /* ----------------------------------------------------------
    GRANSPH: smoothed particle hydrodynamics for granular flow in LAMMPS.
-   Small symmetric/antisymmetric 3x3 tensor helpers, usable on host and device.
+   Small 3-vector and symmetric/antisymmetric 3x3 tensor helpers, usable on host
+   and device.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_TENSOR_H
@@ -16,6 +17,16 @@
 #include <cmath>
 
 namespace GRANSPH {
+
+KOKKOS_INLINE_FUNCTION double dot3(const double *a, const double *b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+KOKKOS_INLINE_FUNCTION double norm3(const double *a)
+{
+  return sqrt(dot3(a, a));
+}
 
 // Symmetric tensor: stress, strain rate. Tension positive.
 struct Sym3 {

@@ -504,7 +504,7 @@ void PairSPHGranular::pack_wall_normals(double *out, int n) const
   const int *mask = atom->mask, wallbit = integrator->wallbit;
   for (int i = 0; i < n; ++i) {
     const double *ni = normals_fix && (mask[i] & wallbit) ? normals_fix->normal(i) : nullptr;
-    const double len = ni ? sqrt(ni[0] * ni[0] + ni[1] * ni[1] + ni[2] * ni[2]) : 0.0;
+    const double len = ni ? GRANSPH::norm3(ni) : 0.0;
     for (int a = 0; a < 3; ++a) out[3 * i + a] = len > 0.0 ? ni[a] / len : 0.0;
   }
 }
