@@ -17,12 +17,11 @@
 #include "compute_sph_stress_atom.h"
 #include "compute_sph_visc_atom.h"
 #include "compute_sph_wallforce.h"
-#include "fix_sph_elastoplastic.h"
 #include "fix_sph_inflow.h"
+#include "fix_sph_models.h"
 #include "fix_sph_move.h"
 #include "fix_sph_normals.h"
 #include "fix_sph_outflow.h"
-#include "fix_sph_phasechange.h"
 #include "pair_sph_granular.h"
 
 #include "compute_sph_wallforce_kokkos.h"
