@@ -21,6 +21,8 @@
 #include "error.h"
 #include "fix_sph_integrate.h"
 #include "force.h"
+#include "gransph_find_fix.h"
+#include "gransph_tensor.h"
 #include "group.h"
 #include "modify.h"
 #include "update.h"
@@ -38,7 +40,7 @@ ComputeSPHWallForce::ComputeSPHWallForce(LAMMPS *lmp, int narg, char **arg) :
 {
   if (narg != 6) error->all(FLERR, "Illegal compute sph/wallforce command: expected nx ny nz");
   for (int a = 0; a < 3; ++a) normal[a] = utils::numeric(FLERR, arg[3 + a], false, lmp);
-  const double norm = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+  const double norm = GRANSPH::norm3(normal);
   if (norm == 0.0) error->all(FLERR, "Compute sph/wallforce: normal nx ny nz must be non-zero");
   if (domain->dimension == 2 && normal[2] != 0.0)
     error->all(FLERR, "Compute sph/wallforce: normal must have nz = 0 for a 2d simulation");
@@ -67,14 +69,18 @@ void ComputeSPHWallForce::init()
     error->all(FLERR, "Compute sph/wallforce: fix {} has no walls group (keyword walls)",
                integrator->id);
   // the pair style computes the wall force only for the fix's dummy particles
-  if (any_atom(integrator->wallbit, false))
+  const int *mask = atom->mask;
+  const int wallbit = integrator->wallbit;
+  const auto off_walls = [&](int i) { return (mask[i] & groupbit) && !(mask[i] & wallbit); };
+  if (GRANSPH::any_owned_atom(lmp, off_walls))
     error->all(FLERR, "Compute sph/wallforce: group {} has atoms outside the walls group of fix {}",
                group->names[igroup], integrator->id);
 
   // fix gravity adds m g to the force of the atoms it acts on
   for (int i = 0; i < modify->nfix; ++i) {
     const Fix *fix = modify->fix[i];
-    if (!utils::strmatch(fix->style, "^gravity") || !any_atom(fix->groupbit, true)) continue;
+    const auto pulled = [&](int i) { return (mask[i] & groupbit) && (mask[i] & fix->groupbit); };
+    if (!utils::strmatch(fix->style, "^gravity") || !GRANSPH::any_owned_atom(lmp, pulled)) continue;
     if (comm->me == 0)
       error->warning(FLERR,
                      "Compute sph/wallforce: fix gravity {} acts on atoms of group {}, so their "
@@ -91,22 +97,10 @@ void ComputeSPHWallForce::compute_vector()
 {
   invoked_vector = update->ntimestep;
   total_force(vector);
-  vector[3] = vector[0] * normal[0] + vector[1] * normal[1] + vector[2] * normal[2];
+  vector[3] = GRANSPH::dot3(vector, normal);
 }
 
 void ComputeSPHWallForce::total_force(double *f)
 {
   group->fcm(igroup, f);
-}
-
-// whether any atom of the group, on any rank, is inside (or outside) the group of `bit`
-bool ComputeSPHWallForce::any_atom(int bit, bool inside) const
-{
-  const int *mask = atom->mask;
-  int local = 0;
-  for (int i = 0; i < atom->nlocal && !local; ++i)
-    local = (mask[i] & groupbit) && ((mask[i] & bit) != 0) == inside;
-  int all = 0;
-  MPI_Allreduce(&local, &all, 1, MPI_INT, MPI_MAX, world);
-  return all;
 }

@@ -28,7 +28,6 @@ class ComputeSPHWallForce : public Compute {
 
   // the total force on the group's atoms, on all ranks
   virtual void total_force(double *f);
-  bool any_atom(int bit, bool inside) const;
 };
 
 }    // namespace LAMMPS_NS

@@ -8,7 +8,7 @@
    GRANSPH: fix sph/elastoplastic, compiled once (fix_sph_model.h).
 ------------------------------------------------------------------------- */
 
-#include "fix_sph_elastoplastic.h"
+#include "fix_sph_models.h"
 
 namespace LAMMPS_NS {
 

@@ -28,6 +28,7 @@
 #include "fix_sph_inflow.h"
 
 #include "fix_sph_integrate.h"
+#include "gransph_tensor.h"
 
 #include "atom.h"
 #include "atom_vec.h"
@@ -47,20 +48,6 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 using MathConst::MY_2PI;
-
-namespace {
-
-double norm3(const double *a)
-{
-  return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-}
-
-double dot3(const double *a, const double *b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-}    // namespace
 
 /* ----------------------------------------------------------------------
    fix ID group sph/inflow type T center cx cy cz normal nx ny nz radius R
@@ -157,17 +144,17 @@ void FixSPHInflow::parse_keywords(int iarg, int narg, char **arg)
   if (atom->rmass_flag && new_mass == 0.0)
     error->all(FLERR, "Fix sph/inflow: keyword mass is required with per-atom masses");
 
-  const double nlen = norm3(normal);
+  const double nlen = GRANSPH::norm3(normal);
   if (nlen == 0.0) error->all(FLERR, "Fix sph/inflow: normal must not be zero (keyword normal)");
   for (int a = 0; a < 3; ++a) normal[a] /= nlen;
   if (domain->dimension == 2 && (normal[2] != 0.0 || center[2] != 0.0))
     error->all(FLERR, "Fix sph/inflow: in 2d, the z components of center and normal must be 0");
 
   if (have_wave) {
-    const double wlen = norm3(wave_dir);
+    const double wlen = GRANSPH::norm3(wave_dir);
     if (wlen == 0.0) error->all(FLERR, "Fix sph/inflow: wave direction must not be zero");
     for (int a = 0; a < 3; ++a) wave_dir[a] /= wlen;
-    if (fabs(dot3(wave_dir, normal)) > 1.0e-6)
+    if (fabs(GRANSPH::dot3(wave_dir, normal)) > 1.0e-6)
       error->all(FLERR, "Fix sph/inflow: wave direction must be perpendicular to the normal");
     if (domain->dimension == 2 && wave_dir[2] != 0.0)
       error->all(FLERR, "Fix sph/inflow: in 2d, the z component of the wave direction must be 0");
@@ -192,7 +179,7 @@ void FixSPHInflow::build_lattice()
     for (int a = 1; a < 3; ++a)
       if (fabs(normal[a]) < fabs(normal[k])) k = a;
     for (int a = 0; a < 3; ++a) e1[a] = (a == k ? 1.0 : 0.0) - normal[k] * normal[a];
-    const double len = norm3(e1);
+    const double len = GRANSPH::norm3(e1);
     for (int a = 0; a < 3; ++a) e1[a] /= len;
     e2[0] = normal[1] * e1[2] - normal[2] * e1[1];
     e2[1] = normal[2] * e1[0] - normal[0] * e1[2];

@@ -241,12 +241,10 @@ void FixSPHIntegrate::init()
                "create_atoms place none? a region outside the box, or sand above it)",
                style, group->names[igroup]);
 
-  int overlap = 0;
-  for (int i = 0; i < atom->nlocal; ++i)
-    if ((atom->mask[i] & groupbit) && (atom->mask[i] & wallbit)) overlap = 1;
-  int any = 0;
-  MPI_Allreduce(&overlap, &any, 1, MPI_INT, MPI_MAX, world);
-  if (any) error->all(FLERR, "Fix {}: an atom is in both the fix group and the walls group", style);
+  const int *mask = atom->mask;
+  const auto in_both = [&](int i) { return (mask[i] & groupbit) && (mask[i] & wallbit); };
+  if (GRANSPH::any_owned_atom(lmp, in_both))
+    error->all(FLERR, "Fix {}: an atom is in both the fix group and the walls group", style);
   check_material_groups();
 }
 
@@ -307,9 +305,8 @@ void FixSPHIntegrate::setup_pre_force(int /*vflag*/)
   modified_host();
 }
 
-// Before any output of the run. Continuing, the first step uses the rates, the
-// acceleration, the wall velocities and the timestep of the last step, as it would
-// have without the run boundary; otherwise those of the setup evaluation at t.
+// Before any output of the run: a run that continues the last restores its last step
+// (fix_sph_integrate.h); otherwise the first step starts from the setup evaluation at t.
 void FixSPHIntegrate::setup(int /*vflag*/)
 {
   sync_host();
@@ -359,12 +356,9 @@ void FixSPHIntegrate::stop_if_atoms_lost() const
 // nullptr if this run can continue with the rates of the last step, or the reason
 const char *FixSPHIntegrate::why_not_continue() const
 {
-  int local = 0;
-  for (int i = 0; i < atom->nlocal && !local; ++i)
-    local = (atom->mask[i] & groupbit) && start[i][STEPPED] != 0.0;
-  int any = 0;
-  MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, world);
-  if (!any) return "no previous step";
+  const int *mask = atom->mask;
+  const auto stepped = [&](int i) { return (mask[i] & groupbit) && start[i][STEPPED] != 0.0; };
+  if (!GRANSPH::any_owned_atom(lmp, stepped)) return "no previous step";
   const GRANSPH::PairSettings *settings = pair_settings(force);
   if (!settings || !ran_with_pair_settings || !settings->same_rates(last_pair_settings))
     return "the pair style settings changed since the last step";
@@ -515,7 +509,9 @@ void FixSPHIntegrate::reset_cfl_timestep()
   // the fastest sound of all materials (of a material without grains: none, at DBL_MAX)
   double c = 0.0;
   for (int k = 0; k < materials.n; ++k) {
-    const double rho = GRANSPH::cfl_density(-global[1 + k], materials.rho_init[k], cfl_sound_reference);
+    // the grains' lowest density, or under cfl/sound reference the initial one: a dilated grain,
+    // whose few and distant neighbours make it no stiffer, does not shorten the step
+    const double rho = cfl_sound_reference ? materials.rho_init[k] : -global[1 + k];
     c = MAX(c, GRANSPH::sound_speed(materials.E[k], rho));
   }
   set_timestep(GRANSPH::cfl_timestep(cfl, smoothing_length(), sqrt(global[0]) * force->ftm2v, c));
@@ -532,7 +528,7 @@ void FixSPHIntegrate::cfl_maxima(double *local)
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
     const double m = rmass ? rmass[i] : mass[type[i]];
-    const double a2 = (f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]) / (m * m);
+    const double a2 = GRANSPH::dot3(f[i], f[i]) / (m * m);
     local[0] = MAX(local[0], a2);
     if (cfl_sound_reference) continue;
     const int k = materials.of(mask[i]);
@@ -570,7 +566,7 @@ void FixSPHIntegrate::init_geostatic_stress()
   double g[3];
   gravity_vector(g);
   const int up = domain->dimension == 3 ? 2 : 1;
-  const double gmag = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  const double gmag = GRANSPH::norm3(g);
   if (gmag == 0.0) error->all(FLERR, "Fix {} geostatic needs a fix gravity", style);
   const double k0 = material_records[0].nu / (1.0 - material_records[0].nu);
   const double rho_init = materials.rho_init[0];
@@ -582,7 +578,7 @@ void FixSPHIntegrate::init_geostatic_stress()
     Sym3 s = Sym3::iso(k0 * sv);
     if (up == 2) s.zz = sv;
     else s.yy = sv;
-    s.store(&state[i][SIGMA]);
+    host_state().set_sigma(i, s);
   }
 }
 
@@ -596,7 +592,7 @@ void FixSPHIntegrate::check_finite() const
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
     const GRANSPH::ParticleState p{{x[i][0], x[i][1], x[i][2]}, {v[i][0], v[i][1], v[i][2]},
-                                   state[i][RHO], GRANSPH::Sym3::load(state[i], SIGMA)};
+                                   state[i][RHO], host_state().sigma(i)};
     if (GRANSPH::bad_state(p))
       error->one(FLERR,
                  "Fix {}: atom {} has a non-finite state or non-positive density (rho {}, v {} {} "

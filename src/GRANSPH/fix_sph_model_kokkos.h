@@ -8,10 +8,9 @@
    GRANSPH: Kokkos twin of FixSPHModel<Model>: the per-atom SPH state lives in
    DualViews; predictor, corrector, stress update, CFL reduction and forward
    communication run on the device with the same per-particle functions as the
-   plain styles (gransph_integrator.h). Migration between ranks and atom sorting
-   move the state on the device where LAMMPS can (2025+, gransph_kokkos_compat.h),
-   through the host copies in LAMMPS 29Sep2021; restarts and creation of atoms
-   use the host copies.
+   plain styles (gransph_integrator.h). Migration and sorting: as
+   GRANSPH_KOKKOS_FIX_DEVICE_EXCHANGE says; restarts and creation of atoms use the
+   host copies.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_SPH_MODEL_KOKKOS_H

@@ -24,6 +24,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_sph_integrate.h"
+#include "gransph_find_fix.h"
 #include "group.h"
 #include "input.h"
 #include "modify.h"
@@ -84,11 +85,10 @@ void FixSPHMove::init()
 void FixSPHMove::check_not_granular() const
 {
   const FixSPHIntegrate &integrator = FixSPHIntegrate::find(lmp, "Fix sph/move");
-  int local = 0, any = 0;
-  for (int k = 0; k < atom->nlocal && !local; ++k)
-    local = (atom->mask[k] & groupbit) && (atom->mask[k] & integrator.groupbit);
-  MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, world);
-  if (any)
+  const int *mask = atom->mask;
+  const int integrated = integrator.groupbit;
+  const auto granular = [&](int i) { return (mask[i] & groupbit) && (mask[i] & integrated); };
+  if (GRANSPH::any_owned_atom(lmp, granular))
     error->all(FLERR, "Fix sph/move: group {} has atoms that fix {} integrates",
                group->names[igroup], integrator.id);
 }

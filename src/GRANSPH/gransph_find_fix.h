@@ -5,12 +5,14 @@
 ------------------------------------------------------------------------- */
 
 /* ----------------------------------------------------------------------
-   GRANSPH: the one fix of a kind that other styles look up (host code).
+   GRANSPH: host helpers the styles share: the one fix of a kind that other
+   styles look up, and questions to all ranks.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_FIND_FIX_H
 #define LMP_GRANSPH_FIND_FIX_H
 
+#include "atom.h"
 #include "error.h"
 #include "lammps.h"
 #include "modify.h"
@@ -33,6 +35,22 @@ namespace GRANSPH {
         found = fix;
       }
     return found;
+  }
+
+  // Collective: whether `mine` holds on any rank
+  inline bool any_rank(MPI_Comm world, bool mine)
+  {
+    int local = mine, any = 0;
+    MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, world);
+    return any;
+  }
+
+  // Collective: whether holds(i) for any owned atom i on any rank
+  template <class Predicate> bool any_owned_atom(LAMMPS_NS::LAMMPS *lmp, Predicate holds)
+  {
+    bool mine = false;
+    for (int i = 0; i < lmp->atom->nlocal && !mine; ++i) mine = holds(i);
+    return any_rank(lmp->world, mine);
   }
 
 }    // namespace GRANSPH

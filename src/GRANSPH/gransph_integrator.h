@@ -12,8 +12,7 @@
    (initial_integrate) and the corrector (final_integrate). The paper evaluates
    the rates twice per step, at t for the predictor and at t+dt/2 for the
    corrector. Here the predictor uses the rates of the previous step's mid-point
-   evaluation, t-dt/2 (at the very first step: the setup evaluation at t; a later
-   run continues with those of its last step, see FixSPHIntegrate::setup).
+   evaluation, t-dt/2 (a run's first step: FixSPHIntegrate::setup).
    That changes the predicted mid-point state by O(dt^2), so the corrector, which
    integrates from t with the mid-point rates, stays second order at one rate
    evaluation per step.
@@ -124,15 +123,6 @@ KOKKOS_INLINE_FUNCTION bool bad_state(const ParticleState &p)
   const double sum = p.x[0] + p.x[1] + p.x[2] + p.v[0] + p.v[1] + p.v[2] + p.rho + p.sigma.xx +
       p.sigma.yy + p.sigma.zz + p.sigma.xy + p.sigma.xz + p.sigma.yz;
   return !(sum - sum == 0.0) | !(p.rho > 0.0);
-}
-
-// The density of eq. 19's largest sound speed sqrt(E / rho): the grains' lowest, rho_min
-// (local), or the material's initial density (reference: a dilated grain, whose few and
-// distant neighbours make it no stiffer, does not shorten the step). Only local needs a
-// pass over the grains for it.
-KOKKOS_INLINE_FUNCTION double cfl_density(double rho_min, double rho_ref, bool reference)
-{
-  return reference ? rho_ref : rho_min;
 }
 
 /* ----------------------------------------------------------------------

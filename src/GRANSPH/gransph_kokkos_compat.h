@@ -6,23 +6,9 @@
 
 /* ----------------------------------------------------------
    GRANSPH: the LAMMPS KOKKOS-package API differences the /kk styles meet, in
-   one place (gransph_lammps_compat.h has the plain ones and the version macro).
-
-   - kokkos_type.h was rewritten after 2021 (KK_FLOAT/KK_ACC_FLOAT, TransformView
-     atom arrays): the view types of the atom arrays we read and write are named
-     here, per device, as GRANSPHCompat::KokkosTypes<DeviceType>;
-   - the forward-communication hooks of a Kokkos fix changed name and signature
-     (one send list per swap, the buffer type): GRANSPH_KOKKOS_FIX_FORWARD_COMM
-     declares the hooks of the version and forwards them to two version-free
-     members, pack_forward_comm_device(n, SendList, buf) and
-     unpack_forward_comm_device(n, first, buf);
-   - neighbour requests: NeighRequest's fields became protected
-     (kokkos_full_list());
-   - LAMMPS 2025+ moves the per-atom arrays of a Kokkos fix with the atoms on
-     the device (exchange and sort) if the fix says it can; 29Sep2021 always
-     copies them through the host. GRANSPH_KOKKOS_FIX_DEVICE_EXCHANGE(a, b, c)
-     declares the hooks for three per-atom DualViews of rows of doubles, and
-     enable_device_exchange() sets the fix's flags; both are empty for 2021.
+   one place (gransph_lammps_compat.h has the plain ones and the version macro),
+   each explained where it is defined: the atom arrays' view types, neighbour
+   requests, moving a fix's per-atom arrays on the device, forward communication.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_KOKKOS_COMPAT_H
@@ -43,6 +29,8 @@
 namespace LAMMPS_NS {
 namespace GRANSPHCompat {
 
+  // the view types of the atom arrays we read and write, per device: kokkos_type.h was
+  // rewritten after 2021 (KK_FLOAT/KK_ACC_FLOAT, TransformView atom arrays)
   template <class DeviceType> struct KokkosTypes {
     typedef ArrayTypes<DeviceType> AT;
 #if GRANSPH_KOKKOS_NEW_API
@@ -83,7 +71,7 @@ namespace GRANSPHCompat {
   typedef KokkosTypes<LMPDeviceType>::tdual_comm_buffer tdual_comm_buffer;
 
   // make the neighbour list the last init_style() requested for this pair a full
-  // list built on DeviceType
+  // list built on DeviceType (NeighRequest's fields became protected after 2021)
   template <class DeviceType> void kokkos_full_list(Neighbor *neighbor, Pair *pair)
   {
     constexpr bool on_device = std::is_same<DeviceType, LMPDeviceType>::value;
@@ -222,6 +210,10 @@ namespace GRANSPHCompat {
 }    // namespace GRANSPHCompat
 }    // namespace LAMMPS_NS
 
+// In the class of a Kokkos fix: the hooks that move its three per-atom DualViews of rows
+// of doubles, a, b and c, with the atoms on the device (exchange and sort), which LAMMPS
+// 2025+ does if the fix says it can (enable_device_exchange); 29Sep2021 always copies
+// them through the host
 #if GRANSPH_KOKKOS_NEW_API
 #define GRANSPH_KOKKOS_FIX_DEVICE_EXCHANGE(a, b, c)                                            \
   int pack_exchange_kokkos(const int &nsend, DAT::tdual_double_2d_lr &k_buf,                   \
@@ -248,7 +240,8 @@ namespace GRANSPHCompat {
 
 // In the class of a Kokkos fix (GRANSPH_KOKKOS_FIX_FORWARD_COMM) or pair style
 // (GRANSPH_KOKKOS_PAIR_FORWARD_COMM), with typedef AT::... and a DeviceType: the
-// forward-communication hooks of this LAMMPS version, forwarding to
+// forward-communication hooks of this LAMMPS version (their names and signatures changed
+// after 2021: one send list per swap, the buffer type), forwarding to
 //   int pack_forward_comm_device(int n, const SendList &list, tdual_comm_buffer &buf);
 //   void unpack_forward_comm_device(int n, int first, tdual_comm_buffer &buf);
 #if GRANSPH_KOKKOS_NEW_API

@@ -40,7 +40,6 @@ struct GranSPHMaterial {
   PlasticStep dp_plastic = RETURN_MAPPING;
 
   double bulk_modulus() const { return E / (3.0 * (1.0 - 2.0 * nu)); }
-  double shear_modulus() const { return E / (2.0 * (1.0 + nu)); }
 
   // Read material `name` from `file` on rank 0, check it and broadcast it.
   // `style` names the command in error messages.

@@ -9,32 +9,18 @@
    written once for the plain and the Kokkos pair styles, over the pair terms
    of gransph_pair_terms.h. Each sum runs over the neighbours of one particle
    and writes to that particle only: no atomics, no scatter.
-   `Particles` is an accessor with
-
-     using Real          (the arithmetic of granular_rates: double, or float under the
-                          pair style's `precision mixed`)
-     int    num_neighbours(int i)
-     neighbours(int i)    (the neighbour list of i, n = neighbours(i); n(k) is the k-th
-                          neighbour's index, masked: taken once per particle, so that
-                          the loop reads the list as one contiguous row)
-     particle(int i)      (a PairParticle, or a PairParticleSingle where Real is float;
-                          every atom in the lists: one that is neither grain nor dummy
-                          massless, so that its values are finite)
-     bool   granular(int i), wall(int i)
-     GRANSPH::WendlandC2 kernel; GRANSPH::Viscosity visc
-     bool   wall_normal  (dummy neighbours enter drho and grad_v along the wall
-                          normal only: their own, or WallVelocitySums')
-     double normal(int i, int a)  (with wall_normal: a dummy's own unit wall normal,
-                          or zeros for a dummy without one and for grains)
-     bool   shape_sums   (sum the shape matrix, which only the corrected gradient uses)
-     bool   wall_friction  (walls with a friction of their own: pair_style wall/friction)
-     double friction(int i)  (with wall_friction: mu = tan(delta) of a dummy's wall, 0 for
-                          a slip wall, negative for a rough wall and for grains; a dummy
-                          with mu >= 0 has its own normal)
-     double slide(int i, int k)  (with wall_friction: a grain's WallFrictionSums::share
-                          (k = 0) and slide_direction (k = 1..3) of this evaluation, ghosts
-                          included; read for grains only)
-     GRANSPH::WallStick stick  (with wall_friction: how its walls hold a grain)
+   `Particles` is a GRANSPH::ParticlesOf (gransph_pair_passes.h), its options the fields
+   of SumOptions (gransph_pair_settings.h), where:
+     neighbours(i)    i's row n, n(k) the k-th neighbour's index, masked: taken once per
+                      particle, so that the loop reads the list as one contiguous row
+     normal(i, a)     with wall_normal: a dummy's own unit wall normal, or zeros for a
+                      dummy without one and for grains
+     friction(i)      with wall_friction: mu = tan(delta) of a dummy's wall, 0 for a slip
+                      wall, negative for a rough wall and for grains; a dummy with
+                      mu >= 0 has its own normal
+     slide(i, k)      with wall_friction: a grain's WallFrictionSums::share (k = 0) and
+                      slide_direction (k = 1..3) of this evaluation, ghosts included;
+                      read for grains only
 
    Vectorised on the host: each loop over the neighbours is an `omp simd` reduction
    into named scalars, its body free of branches (a neighbour outside the support or of
@@ -139,9 +125,8 @@ KOKKOS_INLINE_FUNCTION double pruned_displacement_sq(const Positions &x, const P
 // so that the grain feels no shear from them.
 // With VIRIAL, vir gets its virial 0.5 x_ij (x) F_ij (each pair is visited from both
 // sides), in LAMMPS' order xx yy zz xy xz yz; but for the pairs with a dummy of a wall
-// with a friction of its own, whose whole virial the dummy tallies (wall_force): the
-// grain's sums then carry no tally of the limited force. A neighbour on top of i (r = 0)
-// has grad W = 0 and Pi = 0.
+// with a friction of its own, whose whole virial the dummy tallies (wall_force). A
+// neighbour on top of i (r = 0) has grad W = 0 and Pi = 0.
 template <bool WALL_NORMAL, bool SHAPE, bool VIRIAL, bool FRICTION, class Particles>
 KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, double *vir,
                                                     double *slide)
@@ -335,12 +320,8 @@ KOKKOS_INLINE_FUNCTION ParticleRates granular_rates(const Particles &p, int i, d
     }
   }
   if (VIRIAL) {
-    vir[0] += v0;
-    vir[1] += v1;
-    vir[2] += v2;
-    vir[3] += v3;
-    vir[4] += v4;
-    vir[5] += v5;
+    const double sums[6] = {v0, v1, v2, v3, v4, v5};
+    for (int k = 0; k < 6; ++k) vir[k] += sums[k];
   }
   return r;
 }
@@ -636,10 +617,8 @@ template <class Particles> KOKKOS_INLINE_FUNCTION WallSums wall_sums(const Parti
 
 // Force of the granular neighbours on dummy particle d (eq. 9), with its stress of eq. 8
 // in place; with VIRIAL, vir as in granular_rates. With FRICTION, a dummy of a wall with
-// a friction of its own takes the opposite of what the grain got from it: the pair force
-// as it is while the walls hold the grain, and while it slides the normal part and mu_d
-// times it along the grain's slide direction (WallFrictionSums); and the pair's whole
-// virial x_dj (x) f_dj, of which granular_rates tallies no half.
+// a friction of its own takes the opposite of the limited pair force (WallFrictionSums)
+// and the pair's whole virial x_dj (x) f_dj, of which granular_rates tallies no half.
 template <bool VIRIAL, bool FRICTION, class Particles>
 KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force, double *vir)
 {
@@ -705,12 +684,8 @@ KOKKOS_INLINE_FUNCTION void wall_force(const Particles &p, int d, double *force,
   force[1] = fy;
   force[2] = fz;
   if (VIRIAL) {
-    vir[0] += v0;
-    vir[1] += v1;
-    vir[2] += v2;
-    vir[3] += v3;
-    vir[4] += v4;
-    vir[5] += v5;
+    const double sums[6] = {v0, v1, v2, v3, v4, v5};
+    for (int k = 0; k < 6; ++k) vir[k] += sums[k];
   }
 }
 

@@ -215,7 +215,7 @@ struct WallVelocitySums {
   // adds the sums along the normal to the grain's rates
   KOKKOS_INLINE_FUNCTION void add_along_normal(ParticleRates &r) const
   {
-    const double len = sqrt(offset[0] * offset[0] + offset[1] * offset[1] + offset[2] * offset[2]);
+    const double len = norm3(offset);
     if (len == 0.0) return;
     const double n[3] = {offset[0] / len, offset[1] / len, offset[2] / len};
     for (int a = 0; a < 3; ++a) {
@@ -266,7 +266,7 @@ struct WallFrictionSums {
   KOKKOS_INLINE_FUNCTION double share() const
   {
     const double t[3] = {acc[0] - normal[0], acc[1] - normal[1], acc[2] - normal[2]};
-    const double t_len = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    const double t_len = norm3(t);
     const double bound = fmax(limit, 0.0);    // walls that pull the grain carry no friction
     return t_len > bound ? bound / t_len : 1.0;
   }
@@ -276,7 +276,7 @@ struct WallFrictionSums {
   KOKKOS_INLINE_FUNCTION void slide_direction(double *t) const
   {
     for (int k = 0; k < 3; ++k) t[k] = acc[k] - normal[k];
-    const double t_len = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    const double t_len = norm3(t);
     const bool slides = t_len > limit && limit > 0.0;
     for (int k = 0; k < 3; ++k) t[k] = slides ? t[k] / t_len : 0.0;
   }
@@ -316,7 +316,7 @@ struct WallStick {
                                        const double *v, const double *v_wall,
                                        double *t_per_limit) const
   {
-    const double n_len = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    const double n_len = norm3(normal);
     if (!(n_len > 0.0 && limit > 0.0)) return false;
     const double n[3] = {normal[0] / n_len, normal[1] / n_len, normal[2] / n_len};
     double a[3], u[3], a_n = 0.0, u_n = 0.0;
@@ -381,14 +381,13 @@ struct WallSums {
     if (mode == PAPER)
       return sigma_e -
           Sym3{g_minus_a[0] * r[0], g_minus_a[1] * r[1], g_minus_a[2] * r[2], 0.0, 0.0, 0.0};
-    const double r_len = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    const double r_len = norm3(r);
     if (r_len == 0.0) return sigma_e;
     const double n[3] = {r[0] / r_len, r[1] / r_len, r[2] / r_len};
     const Sym3 nn{n[0] * n[0], n[1] * n[1], n[2] * n[2], n[0] * n[1], n[0] * n[2], n[1] * n[2]};
     const double sigma_nn = sigma_e.ddot(nn);
     // no tension on the wall from a negative q (a wall above the grains)
-    const double q = fmax(g_minus_a[0] * r[0] + g_minus_a[1] * r[1] + g_minus_a[2] * r[2],
-                          fmin(sigma_nn, 0.0));
+    const double q = fmax(dot3(g_minus_a, r), fmin(sigma_nn, 0.0));
     const double base = fmax(-sigma_nn, fabs(q) / max_growth);
     const double growth = base > 0.0 ? q / base : 0.0;
     return sigma_e + growth * (sigma_e - sigma_nn * nn) - q * nn;

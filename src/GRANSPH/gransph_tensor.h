@@ -6,7 +6,8 @@
 
 /* ----------------------------------------------------------
    GRANSPH: smoothed particle hydrodynamics for granular flow in LAMMPS.
-   Small symmetric/antisymmetric 3x3 tensor helpers, usable on host and device.
+   Small 3-vector and symmetric/antisymmetric 3x3 tensor helpers, usable on host
+   and device.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_TENSOR_H
@@ -17,8 +18,15 @@
 
 namespace GRANSPH {
 
-// Voigt-like order used everywhere in GRANSPH (per-atom arrays, dumps, docs).
-enum SymIndex { XX = 0, YY = 1, ZZ = 2, XY = 3, XZ = 4, YZ = 5 };
+KOKKOS_INLINE_FUNCTION double dot3(const double *a, const double *b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+KOKKOS_INLINE_FUNCTION double norm3(const double *a)
+{
+  return sqrt(dot3(a, a));
+}
 
 // Symmetric tensor: stress, strain rate. Tension positive.
 struct Sym3 {
@@ -27,38 +35,6 @@ struct Sym3 {
   KOKKOS_INLINE_FUNCTION static Sym3 zero() { return {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}; }
 
   KOKKOS_INLINE_FUNCTION static Sym3 iso(double a) { return {a, a, a, 0.0, 0.0, 0.0}; }
-
-  KOKKOS_INLINE_FUNCTION static Sym3 load(const double *s)
-  {
-    return {s[XX], s[YY], s[ZZ], s[XY], s[XZ], s[YZ]};
-  }
-
-  KOKKOS_INLINE_FUNCTION void store(double *s) const
-  {
-    s[XX] = xx;
-    s[YY] = yy;
-    s[ZZ] = zz;
-    s[XY] = xy;
-    s[XZ] = xz;
-    s[YZ] = yz;
-  }
-
-  // the same from index `at` of an array: a loop vectorised across particles then
-  // gathers and scatters from one base (a per-particle pointer it cannot)
-  KOKKOS_INLINE_FUNCTION static Sym3 load(const double *a, int at)
-  {
-    return {a[at + XX], a[at + YY], a[at + ZZ], a[at + XY], a[at + XZ], a[at + YZ]};
-  }
-
-  KOKKOS_INLINE_FUNCTION void store(double *a, int at) const
-  {
-    a[at + XX] = xx;
-    a[at + YY] = yy;
-    a[at + ZZ] = zz;
-    a[at + XY] = xy;
-    a[at + XZ] = xz;
-    a[at + YZ] = yz;
-  }
 
   KOKKOS_INLINE_FUNCTION double trace() const { return xx + yy + zz; }
 
@@ -106,27 +82,10 @@ KOKKOS_INLINE_FUNCTION double second_invariant(const Sym3 &s)
 }
 
 // Antisymmetric tensor (spin): w_yx = -w_xy etc., diagonal zero.
-enum SpinIndex { WXY = 0, WXZ = 1, WYZ = 2 };
-
 struct Spin3 {
   double xy, xz, yz;
 
   KOKKOS_INLINE_FUNCTION static Spin3 zero() { return {0.0, 0.0, 0.0}; }
-
-  KOKKOS_INLINE_FUNCTION static Spin3 load(const double *w) { return {w[WXY], w[WXZ], w[WYZ]}; }
-
-  // from index `at` of an array (as Sym3::load)
-  KOKKOS_INLINE_FUNCTION static Spin3 load(const double *a, int at)
-  {
-    return {a[at + WXY], a[at + WXZ], a[at + WYZ]};
-  }
-
-  KOKKOS_INLINE_FUNCTION void store(double *w) const
-  {
-    w[WXY] = xy;
-    w[WXZ] = xz;
-    w[WYZ] = yz;
-  }
 };
 
 // The rotation part of the Jaumann rate, w.s - s.w (symmetric), written out as

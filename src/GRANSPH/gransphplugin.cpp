@@ -17,12 +17,11 @@
 #include "compute_sph_stress_atom.h"
 #include "compute_sph_visc_atom.h"
 #include "compute_sph_wallforce.h"
-#include "fix_sph_elastoplastic.h"
 #include "fix_sph_inflow.h"
+#include "fix_sph_models.h"
 #include "fix_sph_move.h"
 #include "fix_sph_normals.h"
 #include "fix_sph_outflow.h"
-#include "fix_sph_phasechange.h"
 #include "pair_sph_granular.h"
 
 #include "compute_sph_wallforce_kokkos.h"
@@ -73,6 +72,8 @@ void register_style(lammpsplugin_regfunc register_plugin, void *lmp, void *handl
 struct KokkosNames {
   const char *kk, *device, *host;
 };
+// their names from the style's, as string literals: LAMMPS keeps the pointers
+#define GRANSPH_KOKKOS_NAMES(name) {name "/kk", name "/kk/device", name "/kk/host"}
 
 void register_kokkos_style(lammpsplugin_regfunc reg, void *lmp, void *handle, const char *style,
                            const KokkosNames &names, const char *info, void *device_creator,
@@ -125,36 +126,29 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
                  "GRANSPH: deposit edge, skirt and height from the thickness profile",
                  (void *) &compute_creator<ComputeSPHRunout>, true);
 
-  register_kokkos_style(reg, lmp, handle, "pair",
-                        {"sph/granular/kk", "sph/granular/kk/device", "sph/granular/kk/host"},
+  register_kokkos_style(reg, lmp, handle, "pair", GRANSPH_KOKKOS_NAMES("sph/granular"),
                         "GRANSPH granular SPH pair style, Kokkos",
                         (void *) &pair_creator<PairSPHGranularKokkos<LMPDeviceType>>,
                         (void *) &pair_creator<PairSPHGranularKokkos<LMPHostType>>, false);
   register_kokkos_style(
-      reg, lmp, handle, "fix",
-      {"sph/elastoplastic/kk", "sph/elastoplastic/kk/device", "sph/elastoplastic/kk/host"},
+      reg, lmp, handle, "fix", GRANSPH_KOKKOS_NAMES("sph/elastoplastic"),
       "GRANSPH integrator, Drucker-Prager elastoplastic model, Kokkos",
       (void *) &fix_creator<FixSPHModelKokkos<LMPDeviceType, GRANSPH::DruckerPrager>>,
       (void *) &fix_creator<FixSPHModelKokkos<LMPHostType, GRANSPH::DruckerPrager>>, true);
   register_kokkos_style(
-      reg, lmp, handle, "fix",
-      {"sph/phasechange/kk", "sph/phasechange/kk/device", "sph/phasechange/kk/host"},
+      reg, lmp, handle, "fix", GRANSPH_KOKKOS_NAMES("sph/phasechange"),
       "GRANSPH integrator, Dunatunga-Kamrin phase-change model, Kokkos",
       (void *) &fix_creator<FixSPHModelKokkos<LMPDeviceType, GRANSPH::PhaseChange>>,
       (void *) &fix_creator<FixSPHModelKokkos<LMPHostType, GRANSPH::PhaseChange>>, true);
-  register_kokkos_style(
-      reg, lmp, handle, "compute",
-      {"sph/wallforce/kk", "sph/wallforce/kk/device", "sph/wallforce/kk/host"},
-      "GRANSPH: force of the grains on a wall of dummy particles, Kokkos",
-      (void *) &compute_creator<ComputeSPHWallForceKokkos<LMPDeviceType>>,
-      (void *) &compute_creator<ComputeSPHWallForceKokkos<LMPHostType>>, true);
-  register_kokkos_style(reg, lmp, handle, "fix",
-                        {"sph/inflow/kk", "sph/inflow/kk/device", "sph/inflow/kk/host"},
+  register_kokkos_style(reg, lmp, handle, "compute", GRANSPH_KOKKOS_NAMES("sph/wallforce"),
+                        "GRANSPH: force of the grains on a wall of dummy particles, Kokkos",
+                        (void *) &compute_creator<ComputeSPHWallForceKokkos<LMPDeviceType>>,
+                        (void *) &compute_creator<ComputeSPHWallForceKokkos<LMPHostType>>, true);
+  register_kokkos_style(reg, lmp, handle, "fix", GRANSPH_KOKKOS_NAMES("sph/inflow"),
                         "GRANSPH: granular nozzle, Kokkos (inserts on the host)",
                         (void *) &fix_creator<FixSPHInflowKokkos>,
                         (void *) &fix_creator<FixSPHInflowKokkos>, true);
-  register_kokkos_style(reg, lmp, handle, "fix",
-                        {"sph/move/kk", "sph/move/kk/device", "sph/move/kk/host"},
+  register_kokkos_style(reg, lmp, handle, "fix", GRANSPH_KOKKOS_NAMES("sph/move"),
                         "GRANSPH: walls moved with a prescribed velocity, Kokkos",
                         (void *) &fix_creator<FixSPHMoveKokkos<LMPDeviceType>>,
                         (void *) &fix_creator<FixSPHMoveKokkos<LMPHostType>>, true);

@@ -28,6 +28,7 @@
 #include "fix_sph_normals.h"
 #include "force.h"
 #include "group.h"
+#include "gransph_find_fix.h"
 #include "gransph_lammps_compat.h"
 #include "gransph_pair_passes.h"
 #include "memory.h"
@@ -300,13 +301,18 @@ void PairSPHGranular::tally_virial(int i, const double *vir)
     for (int k = 0; k < 6; ++k) vatom[i][k] += vir[k];
 }
 
-// dummy-particle stresses (eq. 8), with the wall acceleration from the velocity change
-// since the last evaluation, and with_forces the grains' forces on them (eq. 9), which
-// need a wall's own new stress only
-template <class Particles> void PairSPHGranular::walls(const Particles &p, bool with_forces)
+// The dummy particles: with `stress` their stress (eq. 8), with the wall acceleration
+// from the velocity change since the last evaluation; with `forces` the grains' force on
+// them (eq. 9; none without granular neighbours, which only the stress sums tell), or the
+// last step's at the setup of a run that continues it, and its virial. A dummy's force
+// needs its own new stress only: one pass does both, unless the forces wait for how the
+// grains slide on walls with a friction of their own.
+template <class Particles> void PairSPHGranular::walls(const Particles &p, bool stress, bool forces)
 {
   FixSPHIntegrate &fix = *integrator;
   const FixSPHIntegrate::HostState state = fix.host_state();
+  const GRANSPH::HostRows<3> f{atom->f[0]};
+  const bool repeat = repeats_last_wall_forces();
   const int inum = list->inum;
   const int *ilist = list->ilist;
   double **v = atom->v;
@@ -316,37 +322,22 @@ template <class Particles> void PairSPHGranular::walls(const Particles &p, bool 
   for (int ii = 0; ii < inum; ++ii) {
     const int d = ilist[ii];
     if (!p.wall(d)) continue;
-    const GRANSPH::WallSums sums =
-        GRANSPH::dummy_stress(p, state, d, v[d], g, inv_dt, config.wall_stress, particles[d].sigma);
-    if (with_forces) add_wall_force(p, d, sums.has_neighbours());
+    bool has_grains = true;
+    if (stress)
+      has_grains = GRANSPH::dummy_stress(p, state, d, v[d], g, inv_dt, config.wall_stress,
+                                         particles[d].sigma)
+                       .has_neighbours();
+    if (!forces) continue;
+    double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    GRANSPH::add_dummy_force(p, d, has_grains, state, f, force->ftm2v, repeat,
+                             vflag_either ? vir : nullptr);
+    if (vflag_either) tally_virial(d, vir);
   }
-}
-
-// the force of the grains on dummy particle d (eq. 9; none without granular neighbours),
-// or the last step's at the setup of a run that continues it, and its virial
-template <class Particles>
-void PairSPHGranular::add_wall_force(const Particles &p, int d, bool has_grains)
-{
-  double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  GRANSPH::add_dummy_force(p, d, has_grains, integrator->host_state(),
-                           GRANSPH::HostRows<3>{atom->f[0]}, force->ftm2v,
-                           repeats_last_wall_forces(), vflag_either ? vir : nullptr);
-  if (vflag_either) tally_virial(d, vir);
 }
 
 bool PairSPHGranular::repeats_last_wall_forces() const
 {
   return update->setupflag && integrator->continues_last_step();
-}
-
-// the grains' forces on the dummy particles (eq. 9), once it is known how the grains
-// slide on the walls with a friction of their own (wall/friction)
-template <class Particles> void PairSPHGranular::wall_forces(const Particles &p)
-{
-  for (int ii = 0; ii < list->inum; ++ii) {
-    const int d = list->ilist[ii];
-    if (p.wall(d)) add_wall_force(p, d, true);
-  }
 }
 
 // rates of the granular particles (eqs. 6, 7, 34, 35)
@@ -474,9 +465,7 @@ int PairSPHGranular::pack_wall_friction(double *out, const double *unit_normals,
 // with a friction of its own without a normal (owned index i >= 0)
 void PairSPHGranular::stop_if_unnormalled(int i)
 {
-  int mine = i >= 0, any = 0;
-  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
-  if (!any) return;
+  if (!GRANSPH::any_rank(world, i >= 0)) return;
   if (i >= 0)
     error->one(FLERR,
                "Pair style sph/granular: dummy particle {} of a wall/friction group has no wall "
@@ -515,7 +504,7 @@ void PairSPHGranular::pack_wall_normals(double *out, int n) const
   const int *mask = atom->mask, wallbit = integrator->wallbit;
   for (int i = 0; i < n; ++i) {
     const double *ni = normals_fix && (mask[i] & wallbit) ? normals_fix->normal(i) : nullptr;
-    const double len = ni ? sqrt(ni[0] * ni[0] + ni[1] * ni[1] + ni[2] * ni[2]) : 0.0;
+    const double len = ni ? GRANSPH::norm3(ni) : 0.0;
     for (int a = 0; a < 3; ++a) out[3 * i + a] = len > 0.0 ? ni[a] / len : 0.0;
   }
 }
@@ -653,11 +642,9 @@ void PairSPHGranular::init_style()
     const int igroup = config.friction[k].group;
     if (!group->names[igroup])
       error->all(FLERR, "Pair style sph/granular: a wall/friction group was deleted");
-    bigint local = 0, dummies = 0;
-    for (int i = 0; i < atom->nlocal; ++i)
-      local += (atom->mask[i] & group->bitmask[igroup]) && (atom->mask[i] & integrator->wallbit);
-    MPI_Allreduce(&local, &dummies, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-    if (integrator->wallbit && dummies == 0)
+    const int bits = group->bitmask[igroup] | integrator->wallbit;
+    const auto dummy_of_group = [&](int i) { return (atom->mask[i] & bits) == bits; };
+    if (integrator->wallbit && !GRANSPH::any_owned_atom(lmp, dummy_of_group))
       error->all(FLERR,
                  "Pair style sph/granular: wall/friction group {} holds no dummy particle of the "
                  "walls group of fix {}",

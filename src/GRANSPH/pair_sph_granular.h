@@ -68,10 +68,8 @@ class PairSPHGranular : public Pair {
   int pruned_nall;    // the atoms, owned and ghost, of the last pruning (-1: none)
 
   // The passes of an evaluation over p, the particles as the twin's accessor reads them,
-  // in the one order of both twins: at a run's setup the checks; the dummies' stress (eq.
-  // 8) and, without walls of a friction of their own (limited), the grains' forces on them
-  // (eq. 9); the grains' rates; with such walls, then the dummies' forces. Twin: this style
-  // or its Kokkos twin, whose steps of the same names take the data where it lives.
+  // in the one order of both twins (pair_sph_granular.cpp's header). Twin: this style or
+  // its Kokkos twin, whose steps of the same names take the data where it lives.
   template <class Twin, class Particles>
   void evaluate_passes(Twin &twin, const Particles &p, bool limited);
 
@@ -121,9 +119,7 @@ class PairSPHGranular : public Pair {
   const GRANSPH::PairParticleSingle *pack_particles_single(int n);
   template <class Particles> void check_no_coincident(const Particles &p);
 
-  template <class Particles> void walls(const Particles &p, bool with_forces);
-  template <class Particles> void wall_forces(const Particles &p);
-  template <class Particles> void add_wall_force(const Particles &p, int d, bool has_grains);
+  template <class Particles> void walls(const Particles &p, bool stress, bool forces);
   template <class Particles> void grains(const Particles &p);
   template <class Particles> Particles pruned(const Particles &p, int nall);
   template <class Particles> void viscous_pressures(const Particles &p);
@@ -139,7 +135,7 @@ void PairSPHGranular::evaluate_passes(Twin &twin, const Particles &p, bool limit
     if (fix.wallbit) twin.check_wall_spacing();
   }
   if (fix.wallbit) {
-    twin.walls(p, !limited);
+    twin.walls(p, true, !limited);
     fix.forward_comm_state();    // the ghosts get the dummies' new stress
     twin.pack_particles(atom->nlocal, nall);
   }
@@ -150,7 +146,7 @@ void PairSPHGranular::evaluate_passes(Twin &twin, const Particles &p, bool limit
     twin.grains(p);
   if (limited) {
     forward_comm_friction_slide();
-    twin.wall_forces(p);
+    twin.walls(p, false, true);
   }
 }
 

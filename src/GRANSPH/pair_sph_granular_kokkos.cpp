@@ -295,9 +295,11 @@ template <class DeviceType> auto PairSPHGranularKokkos<DeviceType>::dummy_forces
 
 // as PairSPHGranular::walls
 template <class DeviceType>
-void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> &p,
-                                              bool with_forces)
+void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> &p, bool stress,
+                                              bool forces)
 {
+  // the forces after the grains' rates: with the ghosts' slide (forward_comm_friction_slide)
+  if (!stress) k_slide.template sync<DeviceType>();
   auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
   auto particles = d_particles;
   const auto state = state_kk->template state_on<DeviceType>();
@@ -307,42 +309,25 @@ void PairSPHGranularKokkos<DeviceType>::walls(const DeviceParticles<DeviceType> 
   const double gx = g[0], gy = g[1], gz = g[2];
   const double inv_dt = update->setupflag ? 0.0 : 1.0 / update->dt;
   const GRANSPH::WallSums::Mode mode = config.wall_stress;
-  const int forces = with_forces;
   EV_FLOAT ev;
   Kokkos::parallel_reduce(
       ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
       LAMMPS_LAMBDA(const int ii, EV_FLOAT &sum) {
         const int d = ilist(ii);
         if (!p.wall(d)) return;
-        const double gd[3] = {gx, gy, gz};
-        const GRANSPH::WallSums sums =
-            GRANSPH::dummy_stress(p, state, d, particles(d).v, gd, inv_dt, mode, particles(d).sigma);
-        if (forces) dummy.add(p, d, sums.has_neighbours(), sum);
+        bool has_grains = true;
+        if (stress) {
+          const double gd[3] = {gx, gy, gz};
+          has_grains = GRANSPH::dummy_stress(p, state, d, particles(d).v, gd, inv_dt, mode,
+                                             particles(d).sigma)
+                           .has_neighbours();
+        }
+        if (forces) dummy.add(p, d, has_grains, sum);
       },
       ev);
   if (vflag_global)
     for (int k = 0; k < 6; ++k) virial[k] += ev.v[k];
-  state_kk->k_state.template modify<DeviceType>();
-  state_kk->k_start.template modify<DeviceType>();
-}
-
-// as PairSPHGranular::wall_forces
-template <class DeviceType>
-void PairSPHGranularKokkos<DeviceType>::wall_forces(const DeviceParticles<DeviceType> &p)
-{
-  k_slide.template sync<DeviceType>();    // with the ghosts' (forward_comm_friction_slide)
-  auto ilist = static_cast<NeighListKokkos<DeviceType> *>(list)->d_ilist;
-  const auto dummy = dummy_forces();
-  EV_FLOAT ev;
-  Kokkos::parallel_reduce(
-      ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
-      LAMMPS_LAMBDA(const int ii, EV_FLOAT &sum) {
-        const int d = ilist(ii);
-        if (p.wall(d)) dummy.add(p, d, true, sum);
-      },
-      ev);
-  if (vflag_global)
-    for (int k = 0; k < 6; ++k) virial[k] += ev.v[k];
+  if (stress) state_kk->k_state.template modify<DeviceType>();
   state_kk->k_start.template modify<DeviceType>();
 }
 

@@ -51,8 +51,7 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   void check_wall_spacing();
   double pack_particles(int from, int to, bool since_pruned = false);
   Kokkos::View<const GRANSPH::PairParticleSingle *, DeviceType> pack_particles_single(int n);
-  void walls(const DeviceParticles<DeviceType> &p, bool with_forces);
-  void wall_forces(const DeviceParticles<DeviceType> &p);
+  void walls(const DeviceParticles<DeviceType> &p, bool stress, bool forces);
   // Particles: DeviceParticles<DeviceType> or, under precision mixed, over PairParticleSingle
   template <class Particles> void grains(const Particles &p);
   template <class Sums, class Particles> EV_FLOAT grains_of(const Particles &p);

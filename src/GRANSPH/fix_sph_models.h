@@ -5,14 +5,15 @@
 ------------------------------------------------------------------------- */
 
 /* ----------------------------------------------------------
-   GRANSPH: granular SPH integrator with the phase-change model of
-   Dunatunga & Kamrin (2015).
+   GRANSPH: the granular SPH integrators of the two models, fix sph/elastoplastic
+   (Drucker-Prager) and fix sph/phasechange (Dunatunga & Kamrin 2015).
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_FIX_SPH_PHASECHANGE_H
-#define LMP_FIX_SPH_PHASECHANGE_H
+#ifndef LMP_FIX_SPH_MODELS_H
+#define LMP_FIX_SPH_MODELS_H
 
 #include "fix_sph_model.h"
+#include "gransph_drucker_prager.h"
 #include "gransph_phase_change.h"
 
 namespace LAMMPS_NS {
@@ -22,9 +23,13 @@ namespace LAMMPS_NS {
 template <> struct VectorisedStep<GRANSPH::PhaseChange> {
   static constexpr bool value = false;
 };
+
+using FixSPHElastoplastic = FixSPHModel<GRANSPH::DruckerPrager>;
 using FixSPHPhaseChange = FixSPHModel<GRANSPH::PhaseChange>;
-// instantiated once, in fix_sph_phasechange.cpp: a small unit, in which the compiler inlines the
-// model into the step's loop and vectorises it
+// each instantiated once, in its own small unit (fix_sph_elastoplastic.cpp,
+// fix_sph_phasechange.cpp), in which the compiler inlines the model into the step's loop
+// and vectorises it
+extern template class FixSPHModel<GRANSPH::DruckerPrager>;
 extern template class FixSPHModel<GRANSPH::PhaseChange>;
 
 }    // namespace LAMMPS_NS
