@@ -17,7 +17,9 @@ On the GPU machine (the device tool: run(command="tools/gpu/gpu-check", carry=["
      bed's, in one run; 300 steps) with `-k on g 1 -sf kk` and with the plain styles on
      one CPU core, compared per atom
      (positions, velocities, density, stress, compute sph/stress/atom) to TOLERANCE;
-  5. `-k on g 1 -sf kk` timed on the column at about 1e5, 1e6 and 4e6 particles and on the
+  5. `-k on g 1 -sf kk` timed on the column at about 1e5, 1e6 and 4e6 particles at rest, at
+     4e6 flowing from its first step (-var v0 1: the sand thrown at the floor at 1 m/s,
+     its lists built every 30 steps or so, as in the collapse's fastest phase), and on the
      bench's flume and jet: particle-steps per second from LAMMPS' loop time, and its
      timing breakdown (Pair, Neigh, Comm, Modify, ...) from second runs with
      CUDA_LAUNCH_BLOCKING=1, since asynchronous kernel launches put device time into
@@ -83,9 +85,10 @@ STAGES = ("launch", "memcheck", "compare", "timings", "ranks", "flume")
 SIZES = [("column", "1e5", bench.SIZES["column"]["1e5"][0], 200),
          ("column", "1e6", {"dx": 0.00271}, 100),
          ("column", "4e6", {"dx": 0.00163}, 100),
+         ("column", "4e6-flow", {"dx": 0.00163, "v0": 1.0}, 200),
          ("flume", "1.2e5", bench.SIZES["flume"]["1.2e5"][0], 200),
          ("jet", "1.1e5", bench.SIZES["jet"]["1.1e5"][0], 200)]
-BLOCKING_STEPS = {"1e5": 100, "1e6": 50, "1.2e5": 100}
+BLOCKING_STEPS = {"1e5": 100, "1e6": 50, "4e6-flow": 100, "1.2e5": 100}
 # the flume stage: the paper's spacing and duration unless --flume-dx / --flume-tend say
 # otherwise; the Drucker-Prager run leaves the phase change half of the time that is left
 # (and whatever it does not use) where that is at least FLUME_RESERVE_S
@@ -486,6 +489,7 @@ class Runner:
 
 
 BINS = re.compile(r"binsize = \S+, bins = +(\d+) +(\d+) +(\d+)")    # the neighbour bins
+BUILDS = re.compile(r"Neighbor list builds = (\d+)")
 SECTIONS = ("Pair", "Bond", "Kspace", "Neigh", "Comm", "Output", "Modify", "Other")
 
 
@@ -506,7 +510,8 @@ def timing(stdout):
     grains = GRAINS.findall(stdout) or [atoms]    # the jet: all are grains
     phases = breakdown(stdout)
     bins = [int(n) for n in BINS.findall(stdout)[-1]] if BINS.search(stdout) else None
-    return {"bins": bins, "atoms": int(atoms), "grains": int(grains[0]), "steps": int(steps),
+    builds = BUILDS.findall(stdout)
+    return {"bins": bins, "list_builds": int(builds[-1]) if builds else None, "atoms": int(atoms), "grains": int(grains[0]), "steps": int(steps),
             "loop_s": float(seconds), "particle_steps_per_s": int(steps) * int(atoms) / float(seconds),
             "phases": phases}
 
@@ -567,7 +572,8 @@ def device_memory(result):
     difference in their peaks over the difference in particles), and the largest column
     the GPU's memory would hold at that rate"""
     runs = sorted((t for t in result["timings"] if t["case"] == "column" and not t["blocking"]
-                   and t.get("device_mib") == t.get("device_mib")), key=lambda t: t["atoms"])
+                   and "v0" not in t["variables"] and t.get("device_mib") == t.get("device_mib")),
+                  key=lambda t: t["atoms"])
     if len(runs) < 2:
         return
     small, large = runs[-2], runs[-1]
@@ -881,7 +887,8 @@ def timings(runner, result):
         phases = ", ".join(f"{k} {v['percent']:.0f}%" for k, v in t["phases"].items() if v["percent"] >= 0.5)
         say(f"  {case} {label}{' blocking' if blocking else ''}: {t['atoms']:,} particles ({t['grains']:,} grains),"
             f" {t['steps']} steps in {t['loop_s']:.2f} s (wall {wall:.0f} s with setup):"
-            f" {t['particle_steps_per_s']:.3e} particle-steps/s; {phases}; neighbour bins {t['bins']};"
+            f" {t['particle_steps_per_s']:.3e} particle-steps/s; {phases}; {t['list_builds']} list builds;"
+            f" neighbour bins {t['bins']};"
             f" device memory {t['device_mib']:.0f} MiB")
     device_memory(result)
     return status
