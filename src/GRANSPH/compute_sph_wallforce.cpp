@@ -77,8 +77,8 @@ void ComputeSPHWallForce::init()
                group->names[igroup], integrator->id);
 
   // fix gravity adds m g to the force of the atoms it acts on
-  for (int i = 0; i < modify->nfix; ++i) {
-    const Fix *fix = modify->fix[i];
+  for (int k = 0; k < modify->nfix; ++k) {
+    const Fix *fix = modify->fix[k];
     const auto pulled = [&](int i) { return (mask[i] & groupbit) && (mask[i] & fix->groupbit); };
     if (!utils::strmatch(fix->style, "^gravity") || !GRANSPH::any_owned_atom(lmp, pulled)) continue;
     if (comm->me == 0)

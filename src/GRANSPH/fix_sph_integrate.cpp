@@ -572,13 +572,14 @@ void FixSPHIntegrate::init_geostatic_stress()
   const double rho_init = materials.rho_init[0];
   double **x = atom->x;
   const int *mask = atom->mask;
+  const HostState rows = host_state();
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
     const double sv = MIN(0.0, rho_init * gmag * (x[i][up] - surface_height));
     Sym3 s = Sym3::iso(k0 * sv);
     if (up == 2) s.zz = sv;
     else s.yy = sv;
-    host_state().set_sigma(i, s);
+    rows.set_sigma(i, s);
   }
 }
 
@@ -589,10 +590,11 @@ void FixSPHIntegrate::check_finite() const
   double **x = atom->x;
   double **v = atom->v;
   const int *mask = atom->mask;
+  const HostState rows = host_state();
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
     const GRANSPH::ParticleState p{{x[i][0], x[i][1], x[i][2]}, {v[i][0], v[i][1], v[i][2]},
-                                   state[i][RHO], host_state().sigma(i)};
+                                   rows.rho(i), rows.sigma(i)};
     if (GRANSPH::bad_state(p))
       error->one(FLERR,
                  "Fix {}: atom {} has a non-finite state or non-positive density (rho {}, v {} {} "
@@ -724,16 +726,18 @@ void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
 }
 
 // atom i's start values from a row of START_SIDE_BY_SIDE: a grain's start of the step
-// (its first 10), a dummy particle's wall velocity (3), STEPPED, its wall force (3)
+// (v, rho, sigma: 10 values), a dummy particle's wall velocity (3), STEPPED, its wall
+// force (3)
 void FixSPHIntegrate::read_start_side_by_side(int i, const double *row)
 {
+  enum { GRAIN_START = 0, OLD_WALL_V = 10, OLD_STEPPED = 13, OLD_WALL_F = 14 };
   for (int k = 0; k < NSTART; ++k) start[i][k] = 0.0;
-  start[i][STEPPED] = row[13];
+  start[i][STEPPED] = row[OLD_STEPPED];
   if (atom->mask[i] & groupbit)
-    std::copy(row, row + 10, &start[i][V_START]);
+    std::copy(row + GRAIN_START, row + OLD_WALL_V, &start[i][V_START]);
   else if (atom->mask[i] & wallbit) {
-    std::copy(row + 10, row + 13, &start[i][WALL_V]);
-    std::copy(row + 14, row + 17, &start[i][WALL_F]);
+    std::copy(row + OLD_WALL_V, row + OLD_WALL_V + 3, &start[i][WALL_V]);
+    std::copy(row + OLD_WALL_F, row + OLD_WALL_F + 3, &start[i][WALL_F]);
   }
 }
 
