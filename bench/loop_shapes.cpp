@@ -68,6 +68,8 @@ struct Rows {
   double normal(int, int) const { return 0.0; }
   double friction(int) const { return -1.0; }
   double slide(int, int) const { return 0.0; }
+  bool grains_first = true;    // grains only
+  int num_grain_neighbours(int i) const { return num[i]; }
 };
 
 constexpr int NSUM = 13;    // drho, acc (3), grad_v (9)

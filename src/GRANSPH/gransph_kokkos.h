@@ -54,6 +54,9 @@ template <class DeviceType> struct DeviceAtoms {
   typename AT::t_neighbors_2d neighbors;
   typename AT::t_int_1d_randomread numneigh, mask;
   int granularbit, wallbit;
+  // with the rows pruned grains first, their grains
+  bool grains_first = false;
+  typename AT::t_int_1d_randomread numgrains;
   // 3 per atom, with wall_normal or wall_friction
   Kokkos::View<const double *, DeviceType> normals;
   // with wall_friction, 1 and 4 per atom

@@ -66,6 +66,11 @@ struct Lanes4 {
   friend Lanes4 magnitude(Lanes4 a) { return _mm256_andnot_pd(_mm256_set1_pd(-0.0), a.v); }
   // acc + a b, rounded once
   friend void add_product(Lanes4 &acc, Lanes4 a, Lanes4 b) { acc.v = _mm256_fmadd_pd(a.v, b.v, acc.v); }
+  // the lanes before lane `count`
+  static Mask first(int count)
+  {
+    return {_mm256_cmp_pd(_mm256_set_pd(3.0, 2.0, 1.0, 0.0), _mm256_set1_pd(count), _CMP_LT_OQ)};
+  }
   static Mask where(const bool *c)
   {
     return {_mm256_castsi256_pd(_mm256_set_epi64x(-(long long) c[3], -(long long) c[2],
@@ -115,6 +120,11 @@ struct Lanes8f {
   friend Lanes8f square_root(Lanes8f a) { return _mm256_sqrt_ps(a.v); }
   friend Lanes8f magnitude(Lanes8f a) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), a.v); }
   friend void add_product(Lanes8f &acc, Lanes8f a, Lanes8f b) { acc.v = _mm256_fmadd_ps(a.v, b.v, acc.v); }
+  static Mask first(int count)
+  {
+    return {_mm256_cmp_ps(_mm256_set_ps(7.0f, 6.0f, 5.0f, 4.0f, 3.0f, 2.0f, 1.0f, 0.0f),
+                          _mm256_set1_ps(float(count)), _CMP_LT_OQ)};
+  }
   static Mask where(const bool *c)
   {
     return {_mm256_castsi256_ps(_mm256_set_epi32(-int(c[7]), -int(c[6]), -int(c[5]), -int(c[4]),

@@ -71,10 +71,17 @@ KOKKOS_INLINE_FUNCTION bool has_coincident_neighbour(const Particles &p, int i)
   return false;
 }
 
+// The counts at the front of a pruned row: the neighbours that enter the sums, and of
+// them the grains, which come first
+struct PrunedRow {
+  int count, grains;
+};
+
 // The neighbours of particle i that enter its sums (a grain's grains and dummies, a
-// dummy's grains) closer than sqrt(cutsq), moved to the front of its row in the row's
-// order; their number. The pair style's pruned rows (its keyword `prune`): the sums' lanes
-// then carry no neighbour that would add zeros. The row keeps every neighbour (the others
+// dummy's grains) closer than sqrt(cutsq), moved to the front of its row, the grains
+// first; their counts. The pair style's pruned rows (its
+// keyword `prune`): the sums' lanes then carry no neighbour that would add zeros and
+// tell a grain from a dummy by its place. The row keeps every neighbour (the others
 // behind them), so that the next pruning before a list build finds them all: the pruned
 // rows take no memory of their own. entry(k) is the row's k-th entry as stored (special
 // bits and all), which the swaps move whole. x(j, a) are the positions, a dense copy (the
@@ -82,25 +89,29 @@ KOKKOS_INLINE_FUNCTION bool has_coincident_neighbour(const Particles &p, int i)
 // branches, so that on a GPU the warp stays together: each neighbour is swapped with the
 // first one that does not count (none before it: itself).
 template <class Particles, class Positions, class Row>
-KOKKOS_INLINE_FUNCTION int prune_row(const Particles &p, int i, const Positions &x,
-                                     double cutsq, const Row &entry)
+KOKKOS_INLINE_FUNCTION PrunedRow prune_row(const Particles &p, int i, const Positions &x,
+                                           double cutsq, const Row &entry)
 {
   const bool i_granular = p.granular(i);
-  if (!i_granular && !p.wall(i)) return 0;
+  if (!i_granular && !p.wall(i)) return {0, 0};
   const double xi = x(i, 0), yi = x(i, 1), zi = x(i, 2);
   const int n = p.num_neighbours(i);
   const auto neighbours = p.neighbours(i);
-  int m = 0;
-  for (int k = 0; k < n; ++k) {
-    const int j = neighbours(k);    // entry k is as listed: the swaps so far moved [0, k)
-    const double rx = xi - x(j, 0), ry = yi - x(j, 1), rz = zi - x(j, 2);
-    const bool enters = p.granular(j) || (i_granular && p.wall(j));
-    const int listed = entry(k);
-    entry(k) = entry(m);
-    entry(m) = listed;
-    m += enters && rx * rx + ry * ry + rz * rz < cutsq;
+  int m = 0, grains = 0;
+  // the grains, then (for a grain) the dummies, each pass over what the last left behind
+  for (int pass = 0; pass < (i_granular ? 2 : 1); ++pass) {
+    for (int k = m; k < n; ++k) {
+      const int j = neighbours(k);    // entry k is as listed: the swaps so far moved [m, k)
+      const double rx = xi - x(j, 0), ry = yi - x(j, 1), rz = zi - x(j, 2);
+      const bool enters = pass == 0 ? p.granular(j) : p.wall(j);
+      const int listed = entry(k);
+      entry(k) = entry(m);
+      entry(m) = listed;
+      m += enters && rx * rx + ry * ry + rz * rz < cutsq;
+    }
+    if (pass == 0) grains = m;
   }
-  return m;
+  return {m, grains};
 }
 
 // How far particle i, now at x(i, .), has moved since its row was pruned at x0(i, .):
@@ -339,36 +350,31 @@ using SumsInLanes =
     std::integral_constant<bool, !std::is_void<typename LanesOf<RecordOf<Particles>>::type>::value>;
 
 // Neighbours k, k + 1, ... (Lanes::WIDTH of them) of particle `self`'s row of n: their
-// records' fields in lanes (f[RecordField]) and their roles. Lanes past the row's end take
-// `self` itself.
+// records' fields in lanes (f[RecordField]). Lanes past the row's end take `self` itself.
 template <class Lanes> struct NeighbourBlock {
   Lanes f[16];
-  bool grain[Lanes::WIDTH], wall[Lanes::WIDTH];
 
   template <class Particles, class Row>
   void load(const Particles &p, const Row &neighbours, int n, int k, int self)
   {
     const typename Lanes::Record *records[Lanes::WIDTH];
-    for (int l = 0; l < Lanes::WIDTH; ++l) {
-      const int j = k + l < n ? neighbours(k + l) : self;
-      records[l] = &p.particle(j);
-      grain[l] = p.granular(j);
-      wall[l] = p.wall(j);
-    }
+    for (int l = 0; l < Lanes::WIDTH; ++l)
+      records[l] = &p.particle(k + l < n ? neighbours(k + l) : self);
     Lanes::load_transposed(records, f);
   }
 };
 
 // granular_rates without options (no wall normal, shape, virial or wall friction) on the
-// host, Lanes::WIDTH neighbours at a time: their records loaded whole and transposed (the
-// loop above assembles its vectors field by field and lane by lane, a third of its
-// instructions), the pair terms the same functions' on Lanes, each sum added by a fused
-// multiply-add. The same sums in another order and rounding: they differ from the loop's in
-// the last digits. A row's last lanes take particle i itself, which adds zeros (r = 0 and
-// v_ij = 0 make grad W, Pi and every product zero).
+// host over rows pruned grains first (prune_row), Lanes::WIDTH neighbours at a time: their
+// records loaded whole and transposed (the loop above assembles its vectors field by field
+// and lane by lane, a third of its instructions), a neighbour's role from its place in the
+// row (the loop above reads each one's group bits), the pair terms the same functions' on
+// Lanes, each sum added by a fused multiply-add. The same sums in another order and
+// rounding: they differ from the loop's in the last digits. Rows not pruned: the loop above.
 template <class Particles>
 inline ParticleRates granular_rates_without_options(const Particles &p, int i, std::true_type)
 {
+  if (!p.grains_first) return granular_rates<false, false, false, false>(p, i, nullptr, nullptr);
   using Lanes = typename LanesOf<RecordOf<Particles>>::type;
   using Record = typename Lanes::Record;
   constexpr int X = FIELD_X, V = FIELD_V, RHO = FIELD_RHO, C = FIELD_C, SXX = FIELD_SXX,
@@ -387,16 +393,16 @@ inline ParticleRates granular_rates_without_options(const Particles &p, int i, s
   Lanes drho = 0.0f, ax = 0.0f, ay = 0.0f, az = 0.0f;
   Lanes lxx = 0.0f, lxy = 0.0f, lxz = 0.0f, lyx = 0.0f, lyy = 0.0f, lyz = 0.0f, lzx = 0.0f,
         lzy = 0.0f, lzz = 0.0f;
-  const int n = p.num_neighbours(i);
+  const int n = p.num_neighbours(i), grains = p.num_grain_neighbours(i);
   const auto neighbours = p.neighbours(i);
   NeighbourBlock<Lanes> block;
   const Lanes *f = block.f;
   for (int k = 0; k < n; k += Lanes::WIDTH) {
     block.load(p, neighbours, n, k, i);
-    const auto grain = Lanes::where(block.grain);
+    const auto grain = Lanes::first(grains - k);
     const Lanes rx = xi - f[X], ry = yi - f[X + 1], rz = zi - f[X + 2];
     const Lanes rsq = rx * rx + ry * ry + rz * rz;
-    const auto inside = (grain | Lanes::where(block.wall)) & (rsq < cutsq);
+    const auto inside = Lanes::first(n - k) & (rsq < cutsq);
     const Lanes fw = zero_unless(inside, kernel.grad_factor_inside(kernel.q(rsq)));
     const Lanes gwx = fw * rx, gwy = fw * ry, gwz = fw * rz;    // grad_i W
     const Lanes dvx = vxi - f[V], dvy = vyi - f[V + 1], dvz = vzi - f[V + 2];
@@ -568,10 +574,11 @@ KOKKOS_INLINE_FUNCTION WallSums wall_sums(const Particles &p, int d, std::false_
 }
 
 #if GRANSPH_LANES
-// wall_sums on the host, Lanes::WIDTH grains at a time (as granular_rates_without_options;
-// a row's last lanes take the dummy itself, which is no grain and adds zeros)
+// wall_sums on the host, Lanes::WIDTH grains at a time (as granular_rates_without_options:
+// a pruned dummy's row holds its grains only)
 template <class Particles> inline WallSums wall_sums(const Particles &p, int d, std::true_type)
 {
+  if (!p.grains_first) return wall_sums(p, d, std::false_type());
   using Lanes = typename LanesOf<RecordOf<Particles>>::type;
   using Record = typename Lanes::Record;
   const Record &pd = p.particle(d);
@@ -590,7 +597,7 @@ template <class Particles> inline WallSums wall_sums(const Particles &p, int d, 
     const Lanes rx = xd - f[FIELD_X], ry = yd - f[FIELD_X + 1], rz = zd - f[FIELD_X + 2];
     const Lanes rsq = rx * rx + ry * ry + rz * rz;
     const Lanes w =
-        zero_unless(Lanes::where(block.grain) & (rsq < cutsq), kernel.w_inside(kernel.q(rsq)));
+        zero_unless(Lanes::first(n - k) & (rsq < cutsq), kernel.w_inside(kernel.q(rsq)));
     add_product(sxx, w, f[FIELD_SXX]);
     add_product(syy, w, f[FIELD_SYY]);
     add_product(szz, w, f[FIELD_SZZ]);
@@ -698,11 +705,11 @@ KOKKOS_INLINE_FUNCTION void wall_force_without_options(const Particles &p, int d
 }
 
 #if GRANSPH_LANES
-// wall_force without options on the host, Lanes::WIDTH grains at a time (as
-// granular_rates_without_options; a row's last lanes take the dummy itself, no grain)
+// wall_force without options on the host, Lanes::WIDTH grains at a time (as wall_sums)
 template <class Particles>
 inline void wall_force_without_options(const Particles &p, int d, double *force, std::true_type)
 {
+  if (!p.grains_first) return wall_force<false, false>(p, d, force, nullptr);
   using Lanes = typename LanesOf<RecordOf<Particles>>::type;
   using Record = typename Lanes::Record;
   const Record &pd = p.particle(d);
@@ -723,7 +730,7 @@ inline void wall_force_without_options(const Particles &p, int d, double *force,
     block.load(p, neighbours, n, k, d);
     const Lanes rx = xd - f[FIELD_X], ry = yd - f[FIELD_X + 1], rz = zd - f[FIELD_X + 2];
     const Lanes rsq = rx * rx + ry * ry + rz * rz;
-    const Lanes fw = zero_unless(Lanes::where(block.grain) & (rsq < cutsq),
+    const Lanes fw = zero_unless(Lanes::first(n - k) & (rsq < cutsq),
                                  kernel.grad_factor_inside(kernel.q(rsq)));
     const Lanes gwx = fw * rx, gwy = fw * ry, gwz = fw * rz;
     const Lanes dvx = vxd - f[FIELD_V], dvy = vyd - f[FIELD_V + 1], dvz = vzd - f[FIELD_V + 2];

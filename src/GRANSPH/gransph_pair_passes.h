@@ -39,7 +39,8 @@ KOKKOS_INLINE_FUNCTION auto element(const View &a, int i) -> decltype(a(i))
 // The accessor of the neighbour sums (gransph_neighbour_sums.h) that both twins make: the
 // settings; the atoms as Atoms holds them, with row(i) particle i's row of neighbours and
 // the per-atom arrays numneigh, mask, normals, friction_mu and friction_slide (pointers or
-// views) beside the role bits granularbit and wallbit; and the particles' records, of
+// views) beside the role bits granularbit and wallbit, and with rows pruned grains first
+// (grains_first) numgrains; and the particles' records, of
 // Particle: PairParticle, or PairParticleSingle for the grains' sums under `precision
 // mixed`.
 template <class Atoms, class Particle, class Records> struct ParticlesOf : SumOptions, Atoms {
@@ -52,6 +53,11 @@ template <class Atoms, class Particle, class Records> struct ParticlesOf : SumOp
   }
 
   KOKKOS_INLINE_FUNCTION int num_neighbours(int i) const { return element(this->numneigh, i); }
+  // of a row pruned grains first (GRANSPH::prune_row): its grains, at its front
+  KOKKOS_INLINE_FUNCTION int num_grain_neighbours(int i) const
+  {
+    return element(this->numgrains, i);
+  }
   KOKKOS_INLINE_FUNCTION auto neighbours(int i) const { return this->row(i); }
   KOKKOS_INLINE_FUNCTION const Particle &particle(int i) const { return element(particles, i); }
   KOKKOS_INLINE_FUNCTION bool granular(int i) const

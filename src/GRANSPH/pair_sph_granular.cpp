@@ -59,6 +59,8 @@ struct HostAtoms {
   int granularbit, wallbit;
   const double *normals;    // 3 per atom, with wall_normal or wall_friction
   const double *friction_mu, *friction_slide;    // 1 and 4 per atom, with wall_friction
+  bool grains_first = false;                     // with the rows pruned: their grains
+  const int *numgrains = nullptr;
 
   struct NeighbourRow {
     const int *row;
@@ -176,16 +178,21 @@ template <class Particles> Particles PairSPHGranular::pruned(const Particles &p,
     pruned_anew(nall);
     pruned_x.assign(x, x + 3 * nall);
     pruned_count.assign(atom->nlocal, 0);
+    pruned_grains.assign(atom->nlocal, 0);
     const double cutsq = pruned_cutsq();
     for (int ii = 0; ii < list->inum; ++ii) {
       const int i = list->ilist[ii];
       int *row = list->firstneigh[i];
-      pruned_count[i] =
+      const GRANSPH::PrunedRow counts =
           GRANSPH::prune_row(p, i, now_at, cutsq, [row](int k) -> int & { return row[k]; });
+      pruned_count[i] = counts.count;
+      pruned_grains[i] = counts.grains;
     }
   }
   Particles q = p;
   q.numneigh = pruned_count.data();
+  q.numgrains = pruned_grains.data();
+  q.grains_first = true;
   return q;
 }
 
@@ -431,7 +438,7 @@ double PairSPHGranular::memory_usage()
   if (normals) bytes += (double) nmax * 3 * sizeof(double);
   if (friction) bytes += (double) nmax * (1 + SLIDE) * sizeof(double);
   bytes += (double) visc_pressure.capacity() * sizeof(double);
-  bytes += (double) pruned_count.capacity() * sizeof(int);
+  bytes += (double) (pruned_count.capacity() + pruned_grains.capacity()) * sizeof(int);
   bytes += (double) pruned_x.capacity() * sizeof(double);
   return bytes;
 }

@@ -110,8 +110,9 @@ class PairSPHGranular : public Pair {
   double *slide;      // with wall/friction: 4 per atom, a grain's share and slide direction
   std::vector<double> visc_pressure;    // owned atoms: viscous_pressure()
   // with prune: how many neighbours at the front of each owned atom's row of the list
-  // count (GRANSPH::prune_row), found at the positions pruned_x (owned and ghost, 3 each)
-  std::vector<int> pruned_count;
+  // count, and of them the grains, first (GRANSPH::prune_row), found at the positions
+  // pruned_x (owned and ghost, 3 each)
+  std::vector<int> pruned_count, pruned_grains;
   std::vector<double> pruned_x;
 
   void grow(int n);

@@ -365,8 +365,10 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
     if ((int) d_pruned_x.extent(0) < nall)
       d_pruned_x = decltype(d_pruned_x)(
           Kokkos::view_alloc(Kokkos::WithoutInitializing, "pair:pruned_x"), atom->nmax);
-    if (d_pruned_count.extent(0) < k_list->d_neighbors.extent(0))
+    if (d_pruned_count.extent(0) < k_list->d_neighbors.extent(0)) {
       d_pruned_count = decltype(d_pruned_count)("pair:pruned_count", k_list->d_neighbors.extent(0));
+      d_pruned_grains = decltype(d_pruned_grains)("pair:pruned_grains", d_pruned_count.extent(0));
+    }
     pruned_anew(nall);
     x0 = d_pruned_x;
     Kokkos::parallel_for(
@@ -375,18 +377,22 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
         });
     auto ilist = k_list->d_ilist;
     auto rows = k_list->d_neighbors;
-    auto count = d_pruned_count;
+    auto count = d_pruned_count, grains = d_pruned_grains;
     const double cutsq = pruned_cutsq();
     const DeviceParticles<DeviceType> listed = p;
     Kokkos::parallel_for(
         ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
         LAMMPS_LAMBDA(const int ii) {
           const int i = ilist(ii);
-          count(i) =
+          const GRANSPH::PrunedRow counts =
               GRANSPH::prune_row(listed, i, x0, cutsq, Kokkos::subview(rows, i, Kokkos::ALL));
+          count(i) = counts.count;
+          grains(i) = counts.grains;
         });
   }
   p.numneigh = d_pruned_count;
+  p.numgrains = d_pruned_grains;
+  p.grains_first = true;
 }
 
 // as PairSPHGranular::grains, in the kernel of the sums' variant of this evaluation
@@ -475,7 +481,7 @@ template <class DeviceType> double PairSPHGranularKokkos<DeviceType>::memory_usa
       d_particles_single.span() * sizeof(GRANSPH::PairParticleSingle) +
       (k_normals.extent(0) + k_friction.extent(0) + k_slide.extent(0) +
        k_visc_pressure.extent(0) + d_pruned_x.span()) * sizeof(double) +
-      d_pruned_count.span() * sizeof(int);
+      (d_pruned_count.span() + d_pruned_grains.span()) * sizeof(int);
 }
 
 namespace LAMMPS_NS {
