@@ -94,7 +94,7 @@ struct Box {
     for (int i = 0; i < n; ++i) {
       std::vector<int> &row = rows[i];
       const PrunedRow pruned =
-          prune_row(*this, i, at, PRUNED_CUTSQ, [&row](int k) -> int & { return row[k]; });
+          prune_row<true>(*this, i, at, PRUNED_CUTSQ, [&row](int k) -> int & { return row[k]; });
       count.push_back(pruned.count);
       grains.push_back(pruned.grains);
     }
@@ -188,6 +188,24 @@ TEST(Lanes, PruneRowsGrainsFirst)
     grains_with_dummies += box.granular(i) && box.grains[i] > 0 && box.count[i] > box.grains[i];
   }
   EXPECT_GT(grains_with_dummies, 50);
+
+  // in a run without walls: the grains only
+  Box again(400, 2.5, 2.2, 7);
+  const auto at = [&again](int j, int a) { return again.particles[j].x[a]; };
+  again.grains_first = false;
+  for (int i = 0; i < int(again.particles.size()); ++i) {
+    if (!again.granular(i)) continue;
+    std::vector<int> &row = again.rows[i];
+    const PrunedRow pruned =
+        prune_row<false>(again, i, at, Box::PRUNED_CUTSQ, [&row](int k) -> int & { return row[k]; });
+    EXPECT_EQ(pruned.count, box.grains[i]) << "particle " << i;
+    EXPECT_EQ(pruned.grains, pruned.count) << "particle " << i;
+    std::vector<int> front(row.begin(), row.begin() + pruned.count),
+        grains(box.rows[i].begin(), box.rows[i].begin() + box.grains[i]);
+    std::sort(front.begin(), front.end());
+    std::sort(grains.begin(), grains.end());
+    EXPECT_EQ(front, grains) << "particle " << i;
+  }
 }
 
 TEST(Lanes, LeaveRowsNotPrunedToTheGenericLoop)

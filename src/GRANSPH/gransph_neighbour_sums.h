@@ -79,16 +79,18 @@ struct PrunedRow {
 
 // The neighbours of particle i that enter its sums (a grain's grains and dummies, a
 // dummy's grains) closer than sqrt(cutsq), moved to the front of its row, the grains
-// first; their counts. The pair style's pruned rows (its
-// keyword `prune`): the sums' lanes then carry no neighbour that would add zeros and
-// tell a grain from a dummy by its place. The row keeps every neighbour (the others
-// behind them), so that the next pruning before a list build finds them all: the pruned
-// rows take no memory of their own. entry(k) is the row's k-th entry as stored (special
-// bits and all), which the swaps move whole. x(j, a) are the positions, a dense copy (the
-// particles' records are four times longer, and the loop waits on their loads). Without
-// branches, so that on a GPU the warp stays together: each neighbour is swapped with the
-// first one that does not count (none before it: itself).
-template <class Particles, class Positions, class Row>
+// first; their counts. The pair style's pruned rows (its keyword `prune`): the sums' lanes
+// then carry no neighbour that would add zeros and tell a grain from a dummy by its
+// place. The row keeps every neighbour (the others behind them), so that the next pruning
+// before a list build finds them all: the pruned rows take no memory of their own.
+// entry(k) is the row's k-th entry as stored (special bits and all), which the swaps move
+// whole. x(j, a) are the positions, a dense copy (the particles' records are four times
+// longer, and the loop waits on their loads). One pass without branches, so that on a GPU
+// the warp stays together: the row is [grains | dummies | others | not yet seen], and each
+// neighbour swaps places with the first of the others (none yet: itself), a grain then
+// also with the first dummy (none: itself). Without DUMMIES (a run without walls) a
+// row holds grains only, and the second swap is left out (a third of the pass's time).
+template <bool DUMMIES, class Particles, class Positions, class Row>
 KOKKOS_INLINE_FUNCTION PrunedRow prune_row(const Particles &p, int i, const Positions &x,
                                            double cutsq, const Row &entry)
 {
@@ -97,19 +99,24 @@ KOKKOS_INLINE_FUNCTION PrunedRow prune_row(const Particles &p, int i, const Posi
   const double xi = x(i, 0), yi = x(i, 1), zi = x(i, 2);
   const int n = p.num_neighbours(i);
   const auto neighbours = p.neighbours(i);
-  int m = 0, grains = 0;
-  // the grains, then (for a grain) the dummies, each pass over what the last left behind
-  for (int pass = 0; pass < (i_granular ? 2 : 1); ++pass) {
-    for (int k = m; k < n; ++k) {
-      const int j = neighbours(k);    // entry k is as listed: the swaps so far moved [m, k)
-      const double rx = xi - x(j, 0), ry = yi - x(j, 1), rz = zi - x(j, 2);
-      const bool enters = pass == 0 ? p.granular(j) : p.wall(j);
-      const int listed = entry(k);
-      entry(k) = entry(m);
+  int grains = 0, m = 0;
+  for (int k = 0; k < n; ++k) {
+    const int j = neighbours(k);    // entry k is as listed: the swaps so far moved [0, k)
+    const double rx = xi - x(j, 0), ry = yi - x(j, 1), rz = zi - x(j, 2);
+    const bool near = rx * rx + ry * ry + rz * rz < cutsq;
+    const bool grain = near && p.granular(j), dummy = DUMMIES && near && i_granular && p.wall(j);
+    const int listed = entry(k), first_other = entry(m);
+    const int first_dummy = DUMMIES ? entry(grains) : 0;
+    entry(k) = first_other;
+    if (DUMMIES) {
+      entry(m) = grain ? first_dummy : listed;
+      // a grain goes first; else entry `grains` stays (the one just written if no dummy
+      // lies between)
+      entry(grains) = grain || grains == m ? listed : first_dummy;
+    } else
       entry(m) = listed;
-      m += enters && rx * rx + ry * ry + rz * rz < cutsq;
-    }
-    if (pass == 0) grains = m;
+    grains += grain;
+    m += grain || dummy;
   }
   return {m, grains};
 }

@@ -180,14 +180,20 @@ template <class Particles> Particles PairSPHGranular::pruned(const Particles &p,
     pruned_count.assign(atom->nlocal, 0);
     pruned_grains.assign(atom->nlocal, 0);
     const double cutsq = pruned_cutsq();
-    for (int ii = 0; ii < list->inum; ++ii) {
-      const int i = list->ilist[ii];
-      int *row = list->firstneigh[i];
-      const GRANSPH::PrunedRow counts =
-          GRANSPH::prune_row(p, i, now_at, cutsq, [row](int k) -> int & { return row[k]; });
-      pruned_count[i] = counts.count;
-      pruned_grains[i] = counts.grains;
-    }
+    const auto prune_rows = [&](auto dummies) {
+      for (int ii = 0; ii < list->inum; ++ii) {
+        const int i = list->ilist[ii];
+        int *row = list->firstneigh[i];
+        const GRANSPH::PrunedRow counts = GRANSPH::prune_row<decltype(dummies)::value>(
+            p, i, now_at, cutsq, [row](int k) -> int & { return row[k]; });
+        pruned_count[i] = counts.count;
+        pruned_grains[i] = counts.grains;
+      }
+    };
+    if (p.wallbit)
+      prune_rows(std::true_type());
+    else
+      prune_rows(std::false_type());
   }
   Particles q = p;
   q.numneigh = pruned_count.data();

@@ -375,24 +375,37 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
         Kokkos::RangePolicy<DeviceType>(0, nall), LAMMPS_LAMBDA(const int i) {
           for (int a = 0; a < 3; ++a) x0(i, a) = x(i, a);
         });
-    auto ilist = k_list->d_ilist;
-    auto rows = k_list->d_neighbors;
-    auto count = d_pruned_count, grains = d_pruned_grains;
-    const double cutsq = pruned_cutsq();
-    const DeviceParticles<DeviceType> listed = p;
-    Kokkos::parallel_for(
-        ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
-        LAMMPS_LAMBDA(const int ii) {
-          const int i = ilist(ii);
-          const GRANSPH::PrunedRow counts =
-              GRANSPH::prune_row(listed, i, x0, cutsq, Kokkos::subview(rows, i, Kokkos::ALL));
-          count(i) = counts.count;
-          grains(i) = counts.grains;
-        });
+    if (p.wallbit)
+      prune_rows_of<true>(p);
+    else
+      prune_rows_of<false>(p);
   }
   p.numneigh = d_pruned_count;
   p.numgrains = d_pruned_grains;
   p.grains_first = true;
+}
+
+// the rows of p pruned anew at the positions d_pruned_x (GRANSPH::prune_row), with or
+// without DUMMIES
+template <class DeviceType>
+template <bool DUMMIES>
+void PairSPHGranularKokkos<DeviceType>::prune_rows_of(const DeviceParticles<DeviceType> &p)
+{
+  auto k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
+  auto ilist = k_list->d_ilist;
+  auto rows = k_list->d_neighbors;
+  auto x0 = d_pruned_x;
+  auto count = d_pruned_count, grains = d_pruned_grains;
+  const double cutsq = pruned_cutsq();
+  Kokkos::parallel_for(
+      ParticlePolicy<DeviceType>(0, list->inum, Kokkos::ChunkSize(64)),
+      LAMMPS_LAMBDA(const int ii) {
+        const int i = ilist(ii);
+        const GRANSPH::PrunedRow counts = GRANSPH::prune_row<DUMMIES>(
+            p, i, x0, cutsq, Kokkos::subview(rows, i, Kokkos::ALL));
+        count(i) = counts.count;
+        grains(i) = counts.grains;
+      });
 }
 
 // as PairSPHGranular::grains, in the kernel of the sums' variant of this evaluation

@@ -57,6 +57,7 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   template <class Sums, class Particles> EV_FLOAT grains_of(const Particles &p);
   template <class Particles> void viscous_pressures(const Particles &p);
   void prune_rows(DeviceParticles<DeviceType> &p, int nall, double moved_sq);
+  template <bool DUMMIES> void prune_rows_of(const DeviceParticles<DeviceType> &p);
 
  private:
   SPHStateKokkos *state_kk;    // the integrator's state in DualViews (init_style)
