@@ -208,20 +208,6 @@ TEST(Lanes, PruneRowsGrainsFirst)
   }
 }
 
-TEST(Lanes, LeaveRowsNotPrunedToTheGenericLoop)
-{
-  Box box(200, 2.5, 2.2, 8);
-  box.grains_first = false;
-  for (int i = 0; i < 200; ++i) {
-    if (!box.granular(i)) continue;
-    const ParticleRates a = granular_rates(box, i, nullptr, nullptr);
-    const ParticleRates b = granular_rates<false, false, false, false>(box, i, nullptr, nullptr);
-    EXPECT_EQ(a.drho, b.drho);
-    EXPECT_EQ(a.acc[0], b.acc[0]);
-    EXPECT_EQ(a.grad_v[2][1], b.grad_v[2][1]);
-  }
-}
-
 TEST(Lanes, TakeThePlainRatesOfBothRecords)
 {
   EXPECT_TRUE(SumsInLanes<Box>::value);
@@ -295,17 +281,24 @@ TEST(Lanes, MatchTheGenericLoopInTheWallForce)
   }
 }
 
-TEST(Lanes, LeaveOptionsToTheGenericLoop)
+TEST(Lanes, LeaveOptionsAndRowsNotPrunedToTheGenericLoop)
 {
-  // with the corrected gradient's shape sums the rates are the generic loop's, bit for bit
-  Box box(200, 2.5, 2.2, 3);
-  box.shape_sums = true;
-  for (int i = 0; i < 200; ++i) {
-    if (!box.granular(i)) continue;
-    const ParticleRates a = granular_rates(box, i, nullptr, nullptr);
-    const ParticleRates b = granular_rates<false, true, false, false>(box, i, nullptr, nullptr);
-    EXPECT_EQ(a.drho, b.drho);
-    EXPECT_EQ(a.acc[0], b.acc[0]);
-    EXPECT_EQ(a.shape.xx, b.shape.xx);
+  // with the corrected gradient's shape sums, or over rows not pruned, the rates are the
+  // generic loop's, bit for bit
+  for (const bool shape : {true, false}) {
+    Box box(200, 2.5, 2.2, 3);
+    box.shape_sums = shape;
+    box.grains_first = shape;
+    for (int i = 0; i < 200; ++i) {
+      if (!box.granular(i)) continue;
+      const ParticleRates a = granular_rates(box, i, nullptr, nullptr);
+      const ParticleRates b = shape
+          ? granular_rates<false, true, false, false>(box, i, nullptr, nullptr)
+          : granular_rates<false, false, false, false>(box, i, nullptr, nullptr);
+      EXPECT_EQ(a.drho, b.drho);
+      EXPECT_EQ(a.acc[0], b.acc[0]);
+      EXPECT_EQ(a.grad_v[2][1], b.grad_v[2][1]);
+      EXPECT_EQ(a.shape.xx, b.shape.xx);
+    }
   }
 }
