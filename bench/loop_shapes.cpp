@@ -74,6 +74,13 @@ struct Rows {
 
 constexpr int NSUM = 13;    // drho, acc (3), grad_v (9)
 
+// the lanes where c holds
+Mask4 where(const bool *c)
+{
+  return {_mm256_castsi256_pd(_mm256_set_epi64x(-(long long) c[3], -(long long) c[2],
+                                                -(long long) c[1], -(long long) c[0]))};
+}
+
 // four grains' values, each field's four side by side (a PairParticle record's fields)
 struct alignas(64) Cluster {
   double f[16][4];
@@ -178,7 +185,7 @@ __attribute__((noinline)) void cluster_sums(const Grains &g, AlignedVector<Clust
   const WendlandC2Of<Lanes4> kernel = kernel_d.in_precision<Lanes4>();
   const Lanes4 cutsq = kernel.cutsq(), h = kernel.h;
   const bool all[4] = {true, true, true, true};
-  const Mask4 grains = Lanes4::where(all);
+  const Mask4 grains = where(all);
   for (int I = 0; I < nclusters; ++I)
     for (int a = 0; a < 4; ++a) {
       const int i = g.lane[4 * I + a];
@@ -191,7 +198,7 @@ __attribute__((noinline)) void cluster_sums(const Grains &g, AlignedVector<Clust
                    sxz_i = fi[SXZ][a], syz_i = fi[SYZ][a];
       const Lanes4 minus_volume_i = -(m_i * inv_rho_i), minus_m_i = -m_i;
       const bool above[4] = {0 > a, 1 > a, 2 > a, 3 > a};
-      const Mask4 above_a = Lanes4::where(above);
+      const Mask4 above_a = where(above);
       Lanes4 s[NSUM];
       for (int q = 0; q < NSUM; ++q) s[q] = 0.0;
       for (const int J : g.clusters_near[i]) {

@@ -71,11 +71,6 @@ struct Lanes4 {
   {
     return {_mm256_cmp_pd(_mm256_set_pd(3.0, 2.0, 1.0, 0.0), _mm256_set1_pd(count), _CMP_LT_OQ)};
   }
-  static Mask where(const bool *c)
-  {
-    return {_mm256_castsi256_pd(_mm256_set_epi64x(-(long long) c[3], -(long long) c[2],
-                                                  -(long long) c[1], -(long long) c[0]))};
-  }
   // the four lanes' sum, pairwise
   double sum() const
   {
@@ -124,11 +119,6 @@ struct Lanes8f {
   {
     return {_mm256_cmp_ps(_mm256_set_ps(7.0f, 6.0f, 5.0f, 4.0f, 3.0f, 2.0f, 1.0f, 0.0f),
                           _mm256_set1_ps(float(count)), _CMP_LT_OQ)};
-  }
-  static Mask where(const bool *c)
-  {
-    return {_mm256_castsi256_ps(_mm256_set_epi32(-int(c[7]), -int(c[6]), -int(c[5]), -int(c[4]),
-                                                 -int(c[3]), -int(c[2]), -int(c[1]), -int(c[0])))};
   }
   // the eight lanes' sum, pairwise
   float sum() const
