@@ -89,7 +89,8 @@ struct PrunedRow {
 // the warp stays together: the row is [grains | dummies | others | not yet seen], and each
 // neighbour swaps places with the first of the others (none yet: itself), a grain then
 // also with the first dummy (none: itself). Without DUMMIES (a run without walls) a
-// row holds grains only, and the second swap is left out (a third of the pass's time).
+// row holds grains only, and the second swap is left out (bench/HISTORY.md: the jet
+// prunes at every step).
 template <bool DUMMIES, class Particles, class Positions, class Row>
 KOKKOS_INLINE_FUNCTION PrunedRow prune_row(const Particles &p, int i, const Positions &x,
                                            double cutsq, const Row &entry)
