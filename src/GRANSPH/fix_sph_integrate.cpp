@@ -385,8 +385,8 @@ void FixSPHIntegrate::keep_evaluated(int i, double *kept, bool back)
   if (atom->mask[i] & groupbit)
     copy(rates[i], kept, NEVALUATED_RATES);
   else if (atom->mask[i] & wallbit) {
-    copy(&state[i][SIGMA], kept, 6);
-    copy(&start[i][STEPPED], kept + 6, NWALL_HISTORY);
+    copy(&state[i][SIGMA], kept, KEPT_STEPPED);
+    copy(&start[i][STEPPED], kept + KEPT_STEPPED, NWALL_HISTORY);
   }
 }
 
@@ -406,7 +406,7 @@ void FixSPHIntegrate::restore_step()
     double *kept = &saved[(size_t) i * KEPT_PER_ATOM];
     const bool grain = atom->mask[i] & groupbit;
     // a grain's STEPPED is the integrator's, a dummy particle's the evaluation's: kept
-    const double stepped = grain ? start[i][STEPPED] : kept[6];
+    const double stepped = grain ? start[i][STEPPED] : kept[KEPT_STEPPED];
     fresh[1] += grain;
     if (stepped == 0.0) {
       fresh[0] += grain;

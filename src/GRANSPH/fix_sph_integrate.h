@@ -133,7 +133,8 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   GRANSPH::PairSettings last_pair_settings;
   const char *fresh_start;                   // why this run cannot continue, or nullptr
   // across the setup evaluation of a run that continues the last: what it overwrites
-  static constexpr int KEPT_PER_ATOM = 6 + NWALL_HISTORY;
+  // a dummy particle's: its stress (6), then its wall history from STEPPED
+  static constexpr int KEPT_STEPPED = 6, KEPT_PER_ATOM = KEPT_STEPPED + NWALL_HISTORY;
   static_assert(KEPT_PER_ATOM >= NEVALUATED_RATES, "a grain's rates fit");
   std::vector<double> saved;
 
