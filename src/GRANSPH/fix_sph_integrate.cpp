@@ -214,8 +214,8 @@ FixSPHIntegrate::~FixSPHIntegrate()
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(state);
-  memory->destroy(rates);
-  memory->destroy(start);
+  memory->sfree(rates);
+  memory->sfree(start);
 }
 
 int FixSPHIntegrate::setmask()
@@ -357,7 +357,7 @@ void FixSPHIntegrate::stop_if_atoms_lost() const
 const char *FixSPHIntegrate::why_not_continue() const
 {
   const int *mask = atom->mask;
-  const auto stepped = [&](int i) { return (mask[i] & groupbit) && start[i][STEPPED] != 0.0; };
+  const auto stepped = [&](int i) { return (mask[i] & groupbit) && start_of(i)[STEPPED] != 0.0; };
   if (!GRANSPH::any_owned_atom(lmp, stepped)) return "no previous step";
   const GRANSPH::PairSettings *settings = pair_settings(force);
   if (!settings || !ran_with_pair_settings || !settings->same_rates(last_pair_settings))
@@ -368,7 +368,7 @@ const char *FixSPHIntegrate::why_not_continue() const
 
 void FixSPHIntegrate::forget_steps()
 {
-  for (int i = 0; i < atom->nlocal; ++i) start[i][STEPPED] = 0.0;
+  for (int i = 0; i < atom->nlocal; ++i) start_of(i)[STEPPED] = 0.0;
 }
 
 // The values of atom i that the setup evaluation overwrites (StateLayout), copied to
@@ -383,10 +383,10 @@ void FixSPHIntegrate::keep_evaluated(int i, double *kept, bool back)
       std::copy(column, column + n, copied);
   };
   if (atom->mask[i] & groupbit)
-    copy(rates[i], kept, NEVALUATED_RATES);
+    copy(rates_of(i), kept, NEVALUATED_RATES);
   else if (atom->mask[i] & wallbit) {
     copy(&state[i][SIGMA], kept, KEPT_STEPPED);
-    copy(&start[i][STEPPED], kept + KEPT_STEPPED, NWALL_HISTORY);
+    copy(start_of(i) + STEPPED, kept + KEPT_STEPPED, NWALL_HISTORY);
   }
 }
 
@@ -406,7 +406,7 @@ void FixSPHIntegrate::restore_step()
     double *kept = &saved[(size_t) i * KEPT_PER_ATOM];
     const bool grain = atom->mask[i] & groupbit;
     // a grain's STEPPED is the integrator's, a dummy particle's the evaluation's: kept
-    const double stepped = grain ? start[i][STEPPED] : kept[KEPT_STEPPED];
+    const double stepped = grain ? start_of(i)[STEPPED] : kept[KEPT_STEPPED];
     fresh[1] += grain;
     if (stepped == 0.0) {
       fresh[0] += grain;
@@ -552,7 +552,7 @@ void FixSPHIntegrate::set_timestep(double dt)
 void FixSPHIntegrate::start_materials_at_their_density()
 {
   for (int i = 0; i < atom->nlocal; ++i)
-    if ((atom->mask[i] & groupbit) && start[i][STEPPED] == 0.0)
+    if ((atom->mask[i] & groupbit) && start_of(i)[STEPPED] == 0.0)
       state[i][RHO] = materials.rho_init[materials.of(atom->mask[i])];
 }
 
@@ -624,8 +624,8 @@ void FixSPHIntegrate::check_plane() const
 void FixSPHIntegrate::grow_arrays(int nmax)
 {
   memory->grow(state, nmax, NSTATE, "sph:state");
-  memory->grow(rates, nmax, nrates, "sph:rates");
-  memory->grow(start, nmax, NSTART, "sph:start");
+  rates = (double *) memory->srealloc(rates, sizeof(double) * nmax * nrates, "sph:rates");
+  start = (double *) memory->srealloc(start, sizeof(double) * nmax * NSTART, "sph:start");
   array_atom = state;
 }
 
@@ -634,8 +634,8 @@ void FixSPHIntegrate::copy_arrays(int i, int j, int /*delflag*/)
   if (i == j) return;    // LAMMPS copies the last atom onto itself when deleting it
   sync_host();
   memcpy(state[j], state[i], NSTATE * sizeof(double));
-  memcpy(rates[j], rates[i], nrates * sizeof(double));
-  memcpy(start[j], start[i], NSTART * sizeof(double));
+  memcpy(rates_of(j), rates_of(i), nrates * sizeof(double));
+  memcpy(start_of(j), start_of(i), NSTART * sizeof(double));
   modified_host();
 }
 
@@ -645,8 +645,8 @@ void FixSPHIntegrate::set_arrays(int i)
   sync_host();
   state[i][RHO] = materials.rho_init[materials.of(atom->mask[i])];
   for (int k = 1; k < NSTATE; ++k) state[i][k] = 0.0;    // stress-free, ELASTIC
-  for (int k = 0; k < nrates; ++k) rates[i][k] = 0.0;
-  for (int k = 0; k < NSTART; ++k) start[i][k] = 0.0;
+  std::fill_n(rates_of(i), nrates, 0.0);
+  std::fill_n(start_of(i), NSTART, 0.0);
   modified_host();
 }
 
@@ -654,8 +654,8 @@ int FixSPHIntegrate::pack_row(int i, double *buf) const
 {
   int m = 0;
   for (int k = 0; k < NSTATE; ++k) buf[m++] = state[i][k];
-  for (int k = 0; k < nrates; ++k) buf[m++] = rates[i][k];
-  for (int k = 0; k < NSTART; ++k) buf[m++] = start[i][k];
+  for (int k = 0; k < nrates; ++k) buf[m++] = rates_of(i)[k];
+  for (int k = 0; k < NSTART; ++k) buf[m++] = start_of(i)[k];
   return m;
 }
 
@@ -663,8 +663,8 @@ int FixSPHIntegrate::unpack_row(int i, const double *buf)
 {
   int m = 0;
   for (int k = 0; k < NSTATE; ++k) state[i][k] = buf[m++];
-  for (int k = 0; k < nrates; ++k) rates[i][k] = buf[m++];
-  for (int k = 0; k < NSTART; ++k) start[i][k] = buf[m++];
+  for (int k = 0; k < nrates; ++k) rates_of(i)[k] = buf[m++];
+  for (int k = 0; k < NSTART; ++k) start_of(i)[k] = buf[m++];
   return m;
 }
 
@@ -713,12 +713,12 @@ void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
       for (const int nstart : {int(NSTART), int(START_SIDE_BY_SIDE)})
         if (size == nstate + nr + nstart) {
           for (int k = 0; k < nrates; ++k)
-            rates[nlocal][k] = k < RATES_DT || nr == nrates ? row[nstate + k] : 0.0;
+            rates_of(nlocal)[k] = k < RATES_DT || nr == nrates ? row[nstate + k] : 0.0;
           if (nstart == NSTART)
-            memcpy(start[nlocal], row + nstate + nr, NSTART * sizeof(double));
+            memcpy(start_of(nlocal), row + nstate + nr, NSTART * sizeof(double));
           else
             read_start_side_by_side(nlocal, row + nstate + nr);
-          if (nr != nrates) start[nlocal][STEPPED] = fmin(start[nlocal][STEPPED], 1.0);
+          if (nr != nrates) start_of(nlocal)[STEPPED] = fmin(start_of(nlocal)[STEPPED], 1.0);
           modified_host();
           return;
         }
@@ -731,13 +731,14 @@ void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
 void FixSPHIntegrate::read_start_side_by_side(int i, const double *row)
 {
   enum { GRAIN_START = 0, OLD_WALL_V = 10, OLD_STEPPED = 13, OLD_WALL_F = 14 };
-  for (int k = 0; k < NSTART; ++k) start[i][k] = 0.0;
-  start[i][STEPPED] = row[OLD_STEPPED];
+  double *to = start_of(i);
+  std::fill_n(to, NSTART, 0.0);
+  to[STEPPED] = row[OLD_STEPPED];
   if (atom->mask[i] & groupbit)
-    std::copy(row + GRAIN_START, row + OLD_WALL_V, &start[i][V_START]);
+    std::copy(row + GRAIN_START, row + OLD_WALL_V, to + V_START);
   else if (atom->mask[i] & wallbit) {
-    std::copy(row + OLD_WALL_V, row + OLD_WALL_V + 3, &start[i][WALL_V]);
-    std::copy(row + OLD_WALL_F, row + OLD_WALL_F + 3, &start[i][WALL_F]);
+    std::copy(row + OLD_WALL_V, row + OLD_WALL_V + 3, to + WALL_V);
+    std::copy(row + OLD_WALL_F, row + OLD_WALL_F + 3, to + WALL_F);
   }
 }
 

@@ -72,8 +72,7 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
                                          GRANSPH::HostRows<NSTART>>;
   HostState host_state() const
   {
-    return {{state ? state[0] : nullptr}, {rates ? rates[0] : nullptr, nrates},
-            {start ? start[0] : nullptr}};
+    return {{state ? state[0] : nullptr}, {rates, nrates}, {start}};
   }
   int wallbit;       // group bit of the dummy-wall particles (0: no walls)
   // The grains' materials: the fix's own (index 0), then those of its keywords material
@@ -95,10 +94,14 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   bool continues_last_step() const { return fresh_start == nullptr; }
 
  protected:
-  double **state;    // rho, sigma (xx yy zz xy xz yz), regime
-  double **rates;    // drho/dt, strain rate (6), spin (xy xz yz), acceleration
-  double **start;    // stepped; a grain's v, rho, sigma at the start of the step, or a
+  double **state;    // rho, sigma (xx yy zz xy xz yz), regime; rows: the fix's output
+  // nrates and NSTART values an atom, in one block each, without row pointers (8 bytes a
+  // slot each): atom i's from rates_of(i), start_of(i)
+  double *rates;     // drho/dt, strain rate (6), spin (xy xz yz), acceleration
+  double *start;     // stepped; a grain's v, rho, sigma at the start of the step, or a
                      // dummy particle's last wall velocity and force
+  double *rates_of(int i) const { return rates + (bigint) i * nrates; }
+  double *start_of(int i) const { return start + (bigint) i * NSTART; }
   double cfl;           // CFL factor of eq. 19; 0 keeps the LAMMPS timestep
   int cfl_sound_reference;    // eq. 19's sound speed at rho_init, not at each grain's density
   int predictor_extrapolated;    // the predictor's rates extrapolated to the step's start

@@ -64,7 +64,8 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
   using Stage = GRANSPH::Stage;
 
   // The rows the grains' step reads and writes (GRANSPH::step_grain): LAMMPS' x, v, f and
-  // the integrator's arrays, over the grains' indices and masses
+  // the integrator's arrays, over the grains' indices; a grain's mass its own (rmass) or
+  // its type's
   struct GrainRows {
     GRANSPH::HostRows<3> x, v;
     GRANSPH::HostRows<3, const double> f;
@@ -72,9 +73,13 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
     GRANSPH::HostRowsOf rates;
     GRANSPH::HostRows<NSTART> start;
     const int *index;
-    const double *masses;
+    const double *rmass, *type_mass;
+    const int *type;
     KOKKOS_INLINE_FUNCTION int atom(int k) const { return index[k]; }
-    KOKKOS_INLINE_FUNCTION double mass(int k) const { return masses[k]; }
+    KOKKOS_INLINE_FUNCTION double mass(int k) const
+    {
+      return rmass ? rmass[index[k]] : type_mass[type[index[k]]];
+    }
   };
 
   // The step of the grains [begin, end) of `rows`, in a loop that the compiler can
@@ -119,10 +124,12 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
                            {v[0]},
                            {f[0]},
                            {state[0]},
-                           {rates[0], nrates},
-                           {start[0]},
+                           {rates, nrates},
+                           {start},
                            grains.data() + first_grain[k],
-                           grain_mass.data() + first_grain[k]};
+                           atom->rmass,
+                           atom->mass,
+                           atom->type};
       // the model's variant for this run, so that the loop has no branch on it
       with_run_variant(models[k], [&](const auto &m) {    // found by ADL: the model's own
         using M = typename std::decay<decltype(m)>::type;
@@ -148,26 +155,24 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
   }
 
  private:
-  // the owned atoms of the group and their masses, for the step's loop: those of material
-  // k from first_grain[k] to first_grain[k + 1]
+  // the owned atoms of the group, for the step's loop: those of material k from
+  // first_grain[k] to first_grain[k + 1]
   std::vector<int> grains;
-  std::vector<double> grain_mass;
   std::vector<int> first_grain;
   bool grains_listed = false;
 
   void list_grains()
   {
     grains_listed = true;
-    grains.clear();
-    grain_mass.clear();
-    first_grain.assign(1, 0);
     const int *mask = atom->mask;
+    int n = 0;
+    for (int i = 0; i < atom->nlocal; ++i) n += (mask[i] & groupbit) != 0;
+    grains.clear();
+    grains.reserve(n);    // no more than the grains (growth by doubling: up to twice)
+    first_grain.assign(1, 0);
     for (int k = 0; k < materials.n; ++k) {
       for (int i = 0; i < atom->nlocal; ++i)
-        if ((mask[i] & groupbit) && materials.holds(k, mask[i])) {
-          grains.push_back(i);
-          grain_mass.push_back(atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]]);
-        }
+        if ((mask[i] & groupbit) && materials.holds(k, mask[i])) grains.push_back(i);
       first_grain.push_back(grains.size());
     }
   }

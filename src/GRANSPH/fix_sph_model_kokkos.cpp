@@ -86,8 +86,9 @@ FixSPHModelKokkos<DeviceType, Model>::FixSPHModelKokkos(LAMMPS *lmp, int narg, c
 
   // the base constructor made plain host arrays: move the state into DualViews
   this->memory->destroy(this->state);
-  this->memory->destroy(this->rates);
-  this->memory->destroy(this->start);
+  this->memory->sfree(this->rates);
+  this->memory->sfree(this->start);
+  this->rates = this->start = nullptr;
   grow_arrays(this->atom->nmax);
   for (int i = 0; i < this->atom->nlocal; ++i) this->set_arrays(i);
 }
@@ -95,8 +96,8 @@ FixSPHModelKokkos<DeviceType, Model>::FixSPHModelKokkos(LAMMPS *lmp, int narg, c
 template <class DeviceType, class Model> FixSPHModelKokkos<DeviceType, Model>::~FixSPHModelKokkos()
 {
   this->memoryKK->destroy_kokkos(k_state, this->state);
-  this->memoryKK->destroy_kokkos(k_rates, this->rates);
-  this->memoryKK->destroy_kokkos(k_start, this->start);
+  // the base destructor frees its blocks: these are the DualViews' host copies
+  this->rates = this->start = nullptr;
 }
 
 template <class DeviceType, class Model> void FixSPHModelKokkos<DeviceType, Model>::init()
@@ -343,8 +344,16 @@ void FixSPHModelKokkos<DeviceType, Model>::grow_arrays(int nmax)
 {
   sync_host();    // grow_kokkos reallocates and copies on the host
   this->memoryKK->grow_kokkos(k_state, this->state, nmax, FSI::NSTATE, "sph:state");
-  this->memoryKK->grow_kokkos(k_rates, this->rates, nmax, this->nrates, "sph:rates");
-  this->memoryKK->grow_kokkos(k_start, this->start, nmax, FSI::NSTART, "sph:start");
+  // rates and start as the base's blocks: the host copies' rows, without row pointers
+  const auto grow = [nmax](auto &dual, int columns, const char *name) {
+    if (dual.view_host().data())
+      dual.resize(nmax, columns);
+    else
+      dual = std::decay_t<decltype(dual)>(name, nmax, columns);
+    return dual.view_host().data();
+  };
+  this->rates = grow(k_rates, this->nrates, "sph:rates");
+  this->start = grow(k_start, FSI::NSTART, "sph:start");
   this->array_atom = this->state;
 }
 
