@@ -37,6 +37,7 @@
 #include "gransph_pair_terms.h"
 #include "gransph_simd.h"
 
+#include <cfloat>
 #include <type_traits>
 #include <utility>
 
@@ -123,8 +124,8 @@ KOKKOS_INLINE_FUNCTION PrunedRow prune_row(const Particles &p, int i, const Posi
 }
 
 // How far particle i, now at x(i, .), has moved since its row was pruned at x0(i, .):
-// squared. Both dense copies (x LAMMPS' own), so that the pass over all atoms reads 48
-// bytes of each.
+// squared. Both dense (x LAMMPS' own, x0 PrunedPositions), so that the pass over all
+// atoms reads 36 bytes of each.
 template <class Positions, class PrunedPositions>
 KOKKOS_INLINE_FUNCTION double pruned_displacement_sq(const Positions &x, const PrunedPositions &x0,
                                                      int i)
@@ -132,6 +133,18 @@ KOKKOS_INLINE_FUNCTION double pruned_displacement_sq(const Positions &x, const P
   const double dx = x(i, 0) - x0(i, 0), dy = x(i, 1) - x0(i, 1), dz = x(i, 2) - x0(i, 2);
   return dx * dx + dy * dy + dz * dz;
 }
+
+// The positions of the last pruning as floats from an origin near the box (12 bytes a
+// particle), callable as (i, a) as the atoms' positions are: Floats is callable the same
+// way. They lie within rounding(reach) of the atoms' where these lie within `reach` of the
+// origin in each direction (a float rounds by FLT_EPSILON / 2 of its size at most), which
+// the pruning's renewal distance allows for (PairSPHGranular::prune_renewal_sq).
+template <class Floats> struct PrunedPositions {
+  Floats x0;
+  double origin[3];
+  KOKKOS_INLINE_FUNCTION double operator()(int i, int a) const { return origin[a] + x0(i, a); }
+  static double rounding(double reach) { return 1.7320508075688772 * 0.5 * FLT_EPSILON * reach; }
+};
 
 // Rates of granular particle i (eqs. 6, 7, 34, 35) over its grain and dummy neighbours.
 // With WALL_NORMAL a dummy with its own normal n enters drho and grad_v through

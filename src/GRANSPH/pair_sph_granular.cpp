@@ -78,6 +78,7 @@ using HostParticles = GRANSPH::ParticlesOf<HostAtoms, PairParticle, const PairPa
 
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
     Pair(lmp), warned_far_from_origin(false), integrator(nullptr), normals_fix(nullptr), pruned_nall(-1),
+    pruned_origin{0.0, 0.0, 0.0}, pruned_rounding(0.0),
     viscous_pressure_step(-1), viscous_pressure_nlocal(0), nmax(0),
     particles(nullptr),
     particles_single(nullptr), normals(nullptr), friction(nullptr), slide(nullptr)
@@ -146,16 +147,28 @@ bool PairSPHGranular::rows_outdated(int nall) const
   return update->setupflag || neighbor->ago == 0 || nall != pruned_nall;
 }
 
+// less the float positions' rounding (none left: at every evaluation)
 double PairSPHGranular::prune_renewal_sq() const
 {
-  const double renew = 0.5 * config.prune * config.h;
-  return renew * renew;
+  const double renew = 0.5 * config.prune * config.h - pruned_rounding;
+  return renew > 0.0 ? renew * renew : -1.0;
 }
 
+// The float positions' origin is the box's lower corner: owned and ghost atoms lie
+// within the box's largest extent and twice the ghost cutoff of it
 void PairSPHGranular::pruned_anew(int nall)
 {
   pruned_nall = nall;
   pvector[0] += 1.0;
+  const double *lo = domain->triclinic ? domain->boxlo_bound : domain->boxlo;
+  const double *hi = domain->triclinic ? domain->boxhi_bound : domain->boxhi;
+  double reach = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    pruned_origin[a] = lo[a];
+    reach = MAX(reach, hi[a] - lo[a]);
+  }
+  reach += 2.0 * MAX(neighbor->cutneighmax, comm->cutghostuser);
+  pruned_rounding = GRANSPH::PrunedPositions<GRANSPH::HostRows<3, float>>::rounding(reach);
 }
 
 // p over its rows pruned in place (GRANSPH::prune_row), pruned anew when outdated or when
@@ -166,8 +179,8 @@ template <class Particles> Particles PairSPHGranular::pruned(const Particles &p,
   const auto now_at = [x](int j, int a) { return x[3 * j + a]; };
   bool anew = rows_outdated(nall);
   if (!anew) {
-    const double *x0 = pruned_x.data();
-    const auto pruned_at = [x0](int j, int a) { return x0[3 * j + a]; };
+    const GRANSPH::PrunedPositions<GRANSPH::HostRows<3, float>> pruned_at{
+        {pruned_x.data()}, {pruned_origin[0], pruned_origin[1], pruned_origin[2]}};
     double farthest = 0.0;
     GRANSPH_SIMD_MAX(farthest)
     for (int i = 0; i < nall; ++i)
@@ -176,7 +189,9 @@ template <class Particles> Particles PairSPHGranular::pruned(const Particles &p,
   }
   if (anew) {
     pruned_anew(nall);
-    pruned_x.assign(x, x + 3 * nall);
+    pruned_x.resize(3 * nall);
+    for (int i = 0; i < nall; ++i)
+      for (int a = 0; a < 3; ++a) pruned_x[3 * i + a] = x[3 * i + a] - pruned_origin[a];
     pruned_count.assign(atom->nlocal, 0);
     pruned_grains.assign(atom->nlocal, 0);
     const double cutsq = pruned_cutsq();
@@ -445,7 +460,7 @@ double PairSPHGranular::memory_usage()
   if (friction) bytes += (double) nmax * (1 + SLIDE) * sizeof(double);
   bytes += (double) visc_pressure.capacity() * sizeof(double);
   bytes += (double) (pruned_count.capacity() + pruned_grains.capacity()) * sizeof(int);
-  bytes += (double) pruned_x.capacity() * sizeof(double);
+  bytes += (double) pruned_x.capacity() * sizeof(float);
   return bytes;
 }
 

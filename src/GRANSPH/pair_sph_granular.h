@@ -66,6 +66,9 @@ class PairSPHGranular : public Pair {
   double prune_renewal_sq() const;
   void pruned_anew(int nall);    // counted in pvector[0], which compute pair reports
   int pruned_nall;    // the atoms, owned and ghost, of the last pruning (-1: none)
+  // the positions of that pruning are floats from pruned_origin (GRANSPH::PrunedPositions),
+  // within pruned_rounding of the atoms'
+  double pruned_origin[3], pruned_rounding;
 
   // The passes of an evaluation over p, the particles as the twin's accessor reads them,
   // in the one order of both twins (pair_sph_granular.cpp's header). Twin: this style or
@@ -113,7 +116,7 @@ class PairSPHGranular : public Pair {
   // count, and of them the grains, first (GRANSPH::prune_row), found at the positions
   // pruned_x (owned and ghost, 3 each)
   std::vector<int> pruned_count, pruned_grains;
-  std::vector<double> pruned_x;
+  std::vector<float> pruned_x;
 
   void grow(int n);
   void pack_particles(int from, int to);

@@ -271,7 +271,7 @@ double PairSPHGranularKokkos<DeviceType>::pack_particles(int from, int to, bool 
     Kokkos::parallel_for(atoms, pack);
     return farthest;
   }
-  auto x0 = d_pruned_x;
+  const auto x0 = pruned_positions();
   Kokkos::parallel_reduce(
       atoms,
       LAMMPS_LAMBDA(const int i, double &most) {
@@ -359,7 +359,6 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
                                                    double moved_sq)
 {
   auto x = atomKK->k_x.template view<DeviceType>();
-  auto x0 = d_pruned_x;
   if (rows_outdated(nall) || moved_sq > prune_renewal_sq()) {
     auto k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
     if ((int) d_pruned_x.extent(0) < nall)
@@ -370,10 +369,10 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
       d_pruned_grains = decltype(d_pruned_grains)("pair:pruned_grains", d_pruned_count.extent(0));
     }
     pruned_anew(nall);
-    x0 = d_pruned_x;
+    const auto x0 = pruned_positions();
     Kokkos::parallel_for(
         Kokkos::RangePolicy<DeviceType>(0, nall), LAMMPS_LAMBDA(const int i) {
-          for (int a = 0; a < 3; ++a) x0(i, a) = x(i, a);
+          for (int a = 0; a < 3; ++a) x0.x0(i, a) = x(i, a) - x0.origin[a];
         });
     if (p.wallbit)
       prune_rows_of<true>(p);
@@ -385,7 +384,7 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
   p.grains_first = true;
 }
 
-// the rows of p pruned anew at the positions d_pruned_x (GRANSPH::prune_row), with or
+// the rows of p pruned anew at the atoms' positions (GRANSPH::prune_row), with or
 // without DUMMIES
 template <class DeviceType>
 template <bool DUMMIES>
@@ -394,7 +393,7 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows_of(const DeviceParticles<Devi
   auto k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
   auto ilist = k_list->d_ilist;
   auto rows = k_list->d_neighbors;
-  auto x0 = d_pruned_x;
+  auto x = atomKK->k_x.template view<DeviceType>();
   auto count = d_pruned_count, grains = d_pruned_grains;
   const double cutsq = pruned_cutsq();
   Kokkos::parallel_for(
@@ -402,7 +401,7 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows_of(const DeviceParticles<Devi
       LAMMPS_LAMBDA(const int ii) {
         const int i = ilist(ii);
         const GRANSPH::PrunedRow counts = GRANSPH::prune_row<DUMMIES>(
-            p, i, x0, cutsq, Kokkos::subview(rows, i, Kokkos::ALL));
+            p, i, x, cutsq, Kokkos::subview(rows, i, Kokkos::ALL));
         count(i) = counts.count;
         grains(i) = counts.grains;
       });
@@ -493,8 +492,15 @@ template <class DeviceType> double PairSPHGranularKokkos<DeviceType>::memory_usa
   return d_particles.span() * sizeof(GRANSPH::PairParticle) +
       d_particles_single.span() * sizeof(GRANSPH::PairParticleSingle) +
       (k_normals.extent(0) + k_friction.extent(0) + k_slide.extent(0) +
-       k_visc_pressure.extent(0) + d_pruned_x.span()) * sizeof(double) +
+       k_visc_pressure.extent(0)) * sizeof(double) + d_pruned_x.span() * sizeof(float) +
       (d_pruned_count.span() + d_pruned_grains.span()) * sizeof(int);
+}
+
+template <class DeviceType>
+GRANSPH::PrunedPositions<Kokkos::View<float *[3], DeviceType>>
+PairSPHGranularKokkos<DeviceType>::pruned_positions() const
+{
+  return {d_pruned_x, {pruned_origin[0], pruned_origin[1], pruned_origin[2]}};
 }
 
 namespace LAMMPS_NS {

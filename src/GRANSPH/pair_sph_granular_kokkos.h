@@ -74,10 +74,11 @@ class PairSPHGranularKokkos : public PairSPHGranular, public KokkosBase {
   // owned atoms: viscous_pressure()
   Kokkos::DualView<double *, DeviceType> k_visc_pressure;
   // with prune: how many neighbours at the front of each owned atom's row of the list
-  // count, and of them the grains, first, found at the positions pruned_x of the owned
-  // and ghost atoms
+  // count, and of them the grains, first, pruned at the positions pruned_x of the owned
+  // and ghost atoms (floats from pruned_origin)
   typename AT::t_int_1d d_pruned_count, d_pruned_grains;
-  Kokkos::View<double *[3], DeviceType> d_pruned_x;
+  Kokkos::View<float *[3], DeviceType> d_pruned_x;
+  GRANSPH::PrunedPositions<Kokkos::View<float *[3], DeviceType>> pruned_positions() const;
 
   int update_wall_normals(int nall, bool limited);
   auto dummy_forces();
