@@ -101,7 +101,7 @@ void FixSPHIntegrate::add_material(const std::string &group_name, const std::str
 
 FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), wallbit(0), state(nullptr), rates(nullptr), start(nullptr),
-    cfl(0.2), cfl_sound_reference(1), predictor_extrapolated(0), nrates(RATES_DT),
+    cfl(0.2), cfl_sound_reference(1), predictor_extrapolated(0), nrates(NEVALUATED_RATES),
     geostatic_flag(0), surface_height(0.0),
     restored(0), last_dt(0.0), ran_with_pair_settings(false), fresh_start(nullptr)
 {
@@ -155,7 +155,7 @@ FixSPHIntegrate::FixSPHIntegrate(LAMMPS *lmp, int narg, char **arg) :
       cfl_sound_reference = either("local", "reference");
     } else if (key == "predictor") {
       predictor_extrapolated = either("midpoint", "extrapolated");
-      nrates = predictor_extrapolated ? NRATES : RATES_DT;
+      nrates = predictor_extrapolated ? int(NRATES) : int(NEVALUATED_RATES);
     } else if (key == "matching" || key == "plastic") {
       if (!utils::strmatch(style, "^sph/elastoplastic"))
         error->all(FLERR, "{}: keyword {} is for fix sph/elastoplastic only", style_name, key);
@@ -690,13 +690,9 @@ int FixSPHIntegrate::pack_restart(int i, double *buf)
   return 1 + pack_exchange(i, buf + 1);
 }
 
-// Files of the other predictor's layout (a file of `predictor midpoint` read under
-// extrapolated, or the reverse) give the columns both have: the grain's next step
-// extrapolates once its own two mid-points are known. Files written before the viscous
-// pressure left the state (STATE_WITH_VISC columns) are read past that column, and those
-// written before a grain's and a dummy particle's start values shared their columns
-// (START_SIDE_BY_SIDE) by read_start_side_by_side. Files of earlier versions hold the
-// state only: those atoms start without a step.
+// Files written before the viscous pressure left the state (STATE_WITH_VISC columns) are
+// read past that column; their rates and start values by read_rates_and_start. Files of
+// earlier versions hold the state only: those atoms start without a step.
 void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
@@ -704,25 +700,45 @@ void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   const int size = static_cast<int>(extra[nlocal][m++]) - 1;
   const double *row = &extra[nlocal][m];
-  const int other_nrates = nrates == NRATES ? RATES_DT : NRATES;
   sync_host();
   memcpy(state[nlocal], row, NSTATE * sizeof(double));
   restored = 1;
   for (const int nstate : {NSTATE, STATE_WITH_VISC})
-    for (const int nr : {nrates, other_nrates})
+    for (const int nr : {int(NEVALUATED_RATES), int(RATES_WITH_ACC), int(NRATES)})
       for (const int nstart : {int(NSTART), int(START_SIDE_BY_SIDE)})
         if (size == nstate + nr + nstart) {
-          for (int k = 0; k < nrates; ++k)
-            rates_of(nlocal)[k] = k < RATES_DT || nr == nrates ? row[nstate + k] : 0.0;
-          if (nstart == NSTART)
-            memcpy(start_of(nlocal), row + nstate + nr, NSTART * sizeof(double));
-          else
-            read_start_side_by_side(nlocal, row + nstate + nr);
-          if (nr != nrates) start_of(nlocal)[STEPPED] = fmin(start_of(nlocal)[STEPPED], 1.0);
+          read_rates_and_start(nlocal, row + nstate, nr, nstart);
           modified_host();
           return;
         }
   modified_host();
+}
+
+// Atom i's rates and start values from a file's row of nr rates (the evaluation's; before
+// December 6, 2026, evening, also its acceleration, RATES_WITH_ACC; with predictor
+// extrapolated NRATES), then nstart start values (START_SIDE_BY_SIDE: before December 6,
+// read_start_side_by_side). Where a file's rates hold the acceleration, a grain keeps it
+// with its start values (LAST_ACC). A file of the other predictor's layout (a file of
+// `predictor midpoint` read under extrapolated, or the reverse) gives the columns both
+// have: the grain's next step extrapolates once its own two mid-points are known.
+void FixSPHIntegrate::read_rates_and_start(int i, const double *row, int nr, int nstart)
+{
+  double *rates_i = rates_of(i), *start_i = start_of(i);
+  std::copy(row, row + NEVALUATED_RATES, rates_i);
+  if (nstart == NSTART)
+    std::copy(row + nr, row + nr + NSTART, start_i);
+  else
+    read_start_side_by_side(i, row + nr);
+  const bool grain = atom->mask[i] & groupbit;
+  if (grain && nr > NEVALUATED_RATES) std::copy(row + ACC, row + ACC + 3, start_i + LAST_ACC);
+  if (nrates == NRATES) {
+    std::fill(rates_i + ACC, rates_i + NRATES, 0.0);
+    if (nr == NRATES)
+      std::copy(row + ACC, row + NRATES, rates_i + ACC);
+    else if (grain)
+      std::copy(start_i + LAST_ACC, start_i + LAST_ACC + 3, rates_i + ACC);
+  }
+  if ((nr == NRATES) != (nrates == NRATES)) start_i[STEPPED] = fmin(start_i[STEPPED], 1.0);
 }
 
 // atom i's start values from a row of START_SIDE_BY_SIDE: a grain's start of the step

@@ -143,11 +143,13 @@ KOKKOS_INLINE_FUNCTION bool bad_state(const ParticleState &p)
 
 enum Stage { PREDICT, CORRECT };
 
-// the rates in the columns from `at` of atom i's row of rates
-template <class Column> KOKKOS_INLINE_FUNCTION StepRates rates_at(const Column &r, int i, int at)
+// the rates of an evaluation in the columns from `at` of atom i's row of rates, with the
+// acceleration acc
+template <class Column>
+KOKKOS_INLINE_FUNCTION StepRates rates_at(const Column &r, int i, int at, const double *acc)
 {
   using L = StateLayout;
-  return {{r(i, at + L::ACC), r(i, at + L::ACC + 1), r(i, at + L::ACC + 2)},
+  return {{acc[0], acc[1], acc[2]},
           r(i, at + L::DRHO),
           sym3_at(r, i, at + L::STRAIN),
           {r(i, at + L::SPIN), r(i, at + L::SPIN + 1), r(i, at + L::SPIN + 2)}};
@@ -170,16 +172,20 @@ KOKKOS_FORCEINLINE_FUNCTION int step_grain(const Model &m, const Rows &rows, int
               rows.start(i, L::RHO_START),
               sym3_at(rows.start, i, L::SIGMA_START)};
   // the predictor takes the acceleration of the last step's mid-point, which the corrector
-  // kept, or a grain without a step that of the setup evaluation; the corrector that of
-  // this evaluation
-  StepRates r = rates_at(rows.rates, i, 0);
+  // kept (LAST_ACC), or a grain without a step that of the setup evaluation; the corrector
+  // that of this evaluation
   const bool unstepped = STAGE == PREDICT && rows.start(i, L::STEPPED) == 0.0;
-  if (STAGE == CORRECT || unstepped)
-    for (int c = 0; c < 3; ++c) r.acc[c] = ftm * rows.f(i, c);
+  double acc[3];
+  for (int c = 0; c < 3; ++c)
+    acc[c] = STAGE == CORRECT || unstepped ? ftm * rows.f(i, c) : rows.start(i, L::LAST_ACC + c);
+  StepRates r = rates_at(rows.rates, i, 0, acc);
   Regime regime;
   if (STAGE == PREDICT) {
     if (EXTRAPOLATE) {    // from the last two mid-points, which PREV then holds
-      const StepRates e = extrapolated(r, rates_at(rows.rates, i, L::PREV),
+      const double acc_before[3] = {rows.rates(i, L::PREV + L::ACC),
+                                    rows.rates(i, L::PREV + L::ACC + 1),
+                                    rows.rates(i, L::PREV + L::ACC + 2)};
+      const StepRates e = extrapolated(r, rates_at(rows.rates, i, L::PREV, acc_before),
                                        rows.rates(i, L::RATES_DT),
                                        rows.rates(i, L::PREV + L::RATES_DT));
       r = select(rows.start(i, L::STEPPED) >= 2.0, e, r);
@@ -191,7 +197,10 @@ KOKKOS_FORCEINLINE_FUNCTION int step_grain(const Model &m, const Rows &rows, int
     store_sym3(s.sigma, rows.start, i, L::SIGMA_START);
   } else {
     correct(m, p, s, r, dt, regime);
-    for (int c = 0; c < 3; ++c) rows.rates(i, L::ACC + c) = r.acc[c];
+    for (int c = 0; c < 3; ++c) {
+      rows.start(i, L::LAST_ACC + c) = r.acc[c];    // the start's velocity is spent
+      if (EXTRAPOLATE) rows.rates(i, L::ACC + c) = r.acc[c];    // for PREV
+    }
     if (EXTRAPOLATE) rows.rates(i, L::RATES_DT) = dt;
     const double stepped = rows.start(i, L::STEPPED) + 1.0;
     rows.start(i, L::STEPPED) = stepped < 2.0 ? stepped : 2.0;

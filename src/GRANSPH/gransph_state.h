@@ -17,19 +17,22 @@
    carry one more state column (STATE_WITH_VISC: the viscous pressure, now
    compute sph/visc/atom's).
 
-   RATES: what the pair style writes, and the acceleration of the same evaluation
-   that the next predictor uses; from RATES_DT on, only with predictor
-   extrapolated (which alone allocates those columns, so that the default keeps
-   the layout and restart files of before): the step whose mid-point they are,
-   and from PREV the same for the step before.
+   RATES: what the pair style writes (NEVALUATED_RATES columns, all the default
+   allocates); from ACC on, only with predictor extrapolated: the acceleration of
+   the same evaluation, the step whose mid-point they are, and from PREV the same
+   for the step before.
 
    START: STEPPED, the number of steps, up to 2, whose evaluation the atom's rates
    (grains) or wall velocity (dummy particles) come from; then a grain's start of
-   the step for the corrector, or in the same columns a dummy particle's wall
+   the step for the corrector, which between two steps holds from LAST_ACC the
+   acceleration of the last evaluation that the next predictor uses (the start's
+   velocity is then spent); or in the same columns a dummy particle's wall
    velocity of the last evaluation and WALL_F, the grains' force on it then (the
    pair style's part of its f), which the setup of a run that continues the last
    repeats. Restart files written before December 6, 2026 hold both kinds' columns
-   side by side (START_SIDE_BY_SIDE, read by FixSPHIntegrate::unpack_restart).
+   side by side (START_SIDE_BY_SIDE), and until that evening the acceleration in
+   the rates, also by default (RATES_WITH_ACC): FixSPHIntegrate::unpack_restart
+   reads them.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_STATE_H
@@ -42,13 +45,16 @@ namespace GRANSPH {
 struct StateLayout {
   enum { RHO = 0, SIGMA = 1, REGIME = 7, NSTATE = 8, STATE_WITH_VISC = 9, NCOMM = 7 };
   enum { DRHO = 0, STRAIN = 1, SPIN = 7, ACC = 10, RATES_DT = 13, PREV = 14, NRATES = 28 };
-  // a grain's start values, and in the same columns a dummy particle's (WALL_V, WALL_F);
-  // START_SIDE_BY_SIDE: the columns of the restart files that held the two apart
+  // a grain's start values (between steps LAST_ACC), and in the same columns a dummy
+  // particle's (WALL_V, WALL_F); START_SIDE_BY_SIDE: the columns of the restart files
+  // that held the two apart
   enum { STEPPED = 0, V_START = 1, RHO_START = 4, SIGMA_START = 5, NSTART = 11 };
-  enum { WALL_V = 1, WALL_F = 4, START_SIDE_BY_SIDE = 17 };
-  // what a pair evaluation writes of an atom: a grain's rates before ACC; a dummy
-  // particle's stress and its wall history, STEPPED to WALL_F's last
-  enum { NEVALUATED_RATES = ACC, NWALL_HISTORY = WALL_F + 3 - STEPPED };
+  enum { LAST_ACC = 1, WALL_V = 1, WALL_F = 4, START_SIDE_BY_SIDE = 17 };
+  // what a pair evaluation writes of an atom: a grain's rates before ACC (the rates'
+  // columns by default; RATES_WITH_ACC: those of the restart files that held the
+  // acceleration too); a dummy particle's stress and its wall history, STEPPED to WALL_F's
+  // last
+  enum { NEVALUATED_RATES = ACC, RATES_WITH_ACC = RATES_DT, NWALL_HISTORY = WALL_F + 3 - STEPPED };
 };
 
 // A per-atom array of STRIDE values per atom, as its rows from the first: atom i's column c
