@@ -168,7 +168,7 @@ template <class Model> class FixSPHModel : public FixSPHIntegrate {
     int n = 0;
     for (int i = 0; i < atom->nlocal; ++i) n += (mask[i] & groupbit) != 0;
     grains.clear();
-    grains.reserve(n);    // no more than the grains (growth by doubling: up to twice)
+    grains.reserve(n);    // their number (growing by doubling would hold up to twice it)
     first_grain.assign(1, 0);
     for (int k = 0; k < materials.n; ++k) {
       for (int i = 0; i < atom->nlocal; ++i)

@@ -96,7 +96,7 @@ FixSPHModelKokkos<DeviceType, Model>::FixSPHModelKokkos(LAMMPS *lmp, int narg, c
 template <class DeviceType, class Model> FixSPHModelKokkos<DeviceType, Model>::~FixSPHModelKokkos()
 {
   this->memoryKK->destroy_kokkos(k_state, this->state);
-  // the base destructor frees its blocks: these are the DualViews' host copies
+  // rates and start point into the DualViews' host copies, which free themselves
   this->rates = this->start = nullptr;
 }
 
