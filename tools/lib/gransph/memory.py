@@ -2,9 +2,12 @@
 """bench/run_bench.py --memory: the memory a particle takes, GRANSPH's beside LAMMPS'
 sph/taitwater peer on the same lattice (bench/README.md, "Memory per particle").
 
-Each configuration runs on one rank, plain styles, the bench's own inputs: the column
-collapse (examples/column_collapse, a = 0.5) and in.taitwater_peer on its particles,
-for a few steps (the setup, the neighbour lists and the steps' arrays all exist then).
+Each configuration runs on one rank, the bench's own inputs: the column collapse
+(examples/column_collapse, a = 0.5) with the plain styles and with the /kk ones on the
+host's Kokkos (one thread: its views' host and device copies are one allocation, so its
+bytes are the layout a GPU holds, with the host's few arrays besides), and
+in.taitwater_peer on its particles, for a few steps (the setup, the neighbour lists and
+the steps' arrays all exist then).
 Its maximum resident set size (the kernel's ru_maxrss of the LAMMPS process) less that
 of the same input at a coarse spacing (the baseline: the executable, its libraries, MPI
 and LAMMPS' fixed arrays), divided by the difference in particles (grains and dummies),
@@ -31,7 +34,9 @@ SIZES = {"1e5": 0.0067, "7e5": 0.0031, "1.5e6": 0.0023, "3e6": 0.00179}
 DEFAULT_SIZES = ["7e5", "3e6"]
 BASELINE_DX = 0.05
 STEPS = 5
-CONFIGURATIONS = [("GRANSPH", os.path.join(TOP, INPUTS["column"])), ("sph/taitwater", PEER)]
+CONFIGURATIONS = [("GRANSPH", os.path.join(TOP, INPUTS["column"]), []),
+                  ("GRANSPH /kk", os.path.join(TOP, INPUTS["column"]), ["-k", "on", "t", "1", "-sf", "kk"]),
+                  ("sph/taitwater", PEER, [])]
 
 ESTIMATE = re.compile(r"Per MPI rank memory allocation \(min/avg/max\) = \S+ \| \S+ \| (\S+) Mbytes")
 NEIGHBOURS = re.compile(r"Ave neighs/atom = (\S+)")
@@ -126,8 +131,8 @@ def measure(sizes, steps):
     rows = []
     print(line(["styles", "particles (grains)", "neighbours", "max RSS MiB", "bytes/part",
                 "2nd run", "LAMMPS est"]), flush=True)
-    for name, script in CONFIGURATIONS:
-        run = Run(f"{name} 1 rank", script, 1)
+    for name, script, flags in CONFIGURATIONS:
+        run = Run(f"{name} 1 rank", script, 1, flags)
         base = peak(run, BASELINE_DX, steps)
         print(f"{name} baseline: dx {BASELINE_DX}, {base.natoms:,} particles, "
               f"max RSS {base.rss / 2**20:.1f} MiB", flush=True)
@@ -143,7 +148,7 @@ def measure(sizes, steps):
 def markdown(rows, steps, command):
     """the table in markdown, with the machine, the date and the command"""
     base = {row.name: row.base for row in rows}
-    lines = [f"Bytes per particle (grains and dummies), max RSS of one rank, plain styles, double "
+    lines = [f"Bytes per particle (grains and dummies), max RSS of one rank (the /kk styles on the host's Kokkos, one thread), double "
              f"precision; {datetime.date.today().isoformat()}, {machine()}, LAMMPS "
              f"{rows[0].one.version}; `{command}` ({steps} steps, then {steps} more in a second "
              f"run that continues the first). Baseline, subtracted: the same input at dx "
@@ -162,7 +167,7 @@ def main(sizes, steps, markdown_file):
         sys.exit(f"--memory sizes: {', '.join(SIZES)}, not {', '.join(unknown)}")
     steps = steps or STEPS
     command = " ".join(["bench/run_bench.py"] + sys.argv[1:])
-    print(f"memory per particle: max RSS of one rank, plain styles, {steps} steps "
+    print(f"memory per particle: max RSS of one rank (/kk: on the host's Kokkos), {steps} steps "
           f"(and a second run of {steps} continuing it), less the baseline's at dx {BASELINE_DX}",
           flush=True)
     rows = measure(sizes, steps)
