@@ -5,7 +5,8 @@ sph/taitwater peer on the same lattice (bench/README.md, "Memory per particle").
 Each configuration runs on one rank, the bench's own inputs: the column collapse
 (examples/column_collapse, a = 0.5) with the plain styles and with the /kk ones on the
 host's Kokkos (one thread: its views' host and device copies are one allocation, so its
-bytes are the layout a GPU holds, with the host's few arrays besides), and
+bytes are the layout a GPU holds, with the host's few arrays besides; with the bins a
+GPU takes, KOKKOS_GPU_BINS), and
 in.taitwater_peer on its particles, for a few steps (the setup, the neighbour lists and
 the steps' arrays all exist then).
 Its maximum resident set size (the kernel's ru_maxrss of the LAMMPS process) less that
@@ -34,6 +35,9 @@ SIZES = {"1e5": 0.0067, "7e5": 0.0031, "1.5e6": 0.0023, "3e6": 0.00179}
 DEFAULT_SIZES = ["7e5", "3e6"]
 BASELINE_DX = 0.05
 STEPS = 5
+# On a GPU the KOKKOS package bins atoms at the neighbour cutoff, not at half of it as on
+# the host (NeighborKokkos::set_binsize_kokkos): the column's cutoff, 2h + skin, is 2.6 dx
+KOKKOS_GPU_BINS = 2.6
 CONFIGURATIONS = [("GRANSPH", os.path.join(TOP, INPUTS["column"]), []),
                   ("GRANSPH /kk", os.path.join(TOP, INPUTS["column"]), ["-k", "on", "t", "1", "-sf", "kk"]),
                   ("sph/taitwater", PEER, [])]
@@ -132,13 +136,15 @@ def measure(sizes, steps):
     print(line(["styles", "particles (grains)", "neighbours", "max RSS MiB", "bytes/part",
                 "2nd run", "LAMMPS est"]), flush=True)
     for name, script, flags in CONFIGURATIONS:
-        run = Run(f"{name} 1 rank", script, 1, flags)
-        base = peak(run, BASELINE_DX, steps)
+        def run(dx):
+            gpu_bins = ["-pk", "kokkos", "binsize", f"{KOKKOS_GPU_BINS * dx:g}"] if "kk" in flags else []
+            return Run(f"{name} 1 rank", script, 1, flags + gpu_bins)
+        base = peak(run(BASELINE_DX), BASELINE_DX, steps)
         print(f"{name} baseline: dx {BASELINE_DX}, {base.natoms:,} particles, "
               f"max RSS {base.rss / 2**20:.1f} MiB", flush=True)
         for size in sizes:
-            one = peak(run, SIZES[size], steps)
-            continued = peak(run, SIZES[size], steps, then=steps)
+            one = peak(run(SIZES[size]), SIZES[size], steps)
+            continued = peak(run(SIZES[size]), SIZES[size], steps, then=steps)
             row = Row(name, base, one, continued)
             print(line(row.cells()), flush=True)
             rows.append(row)
