@@ -208,36 +208,6 @@ TEST(Lanes, PruneRowsGrainsFirst)
   }
 }
 
-TEST(Lanes, PrunedPositionsWithinTheirRounding)
-{
-  // atoms within `reach` of an origin far from 0 (a site in map coordinates): the float
-  // copy lies within rounding(reach) of each, and that bound is not loose by much
-  struct Floats {
-    const float *x;
-    float operator()(int i, int a) const { return x[3 * i + a]; }
-  };
-  std::mt19937 random(3);
-  for (const double reach : {0.3, 2.0e3, 5.0e4}) {
-    std::uniform_real_distribution<double> within(-reach, reach);
-    const double origin[3] = {4.5e5, 5.2e6, 1.2e3};
-    std::vector<double> x(3 * 1000);
-    std::vector<float> copy(x.size());
-    for (std::size_t k = 0; k < x.size(); ++k) {
-      x[k] = origin[k % 3] + within(random);
-      copy[k] = x[k] - origin[k % 3];
-    }
-    const PrunedPositions<Floats> x0{{copy.data()}, {origin[0], origin[1], origin[2]}};
-    const double bound = PrunedPositions<Floats>::rounding(reach);
-    double farthest = 0.0;
-    for (int i = 0; i < 1000; ++i) {
-      const auto at = [&x](int j, int a) { return x[3 * j + a]; };
-      farthest = std::max(farthest, std::sqrt(pruned_displacement_sq(at, x0, i)));
-    }
-    EXPECT_LE(farthest, bound) << "reach " << reach;
-    EXPECT_GT(farthest, 0.2 * bound) << "reach " << reach;
-  }
-}
-
 TEST(Lanes, TakeThePlainRatesOfBothRecords)
 {
   EXPECT_TRUE(SumsInLanes<Box>::value);

@@ -621,8 +621,17 @@ void FixSPHIntegrate::check_plane() const
    per-atom arrays: they move with the atoms and survive restarts
 ------------------------------------------------------------------------- */
 
+// The host reads the rows through int offsets (GRANSPH::HostRows: vector gathers)
+void FixSPHIntegrate::check_row_offsets(int nmax) const
+{
+  if ((bigint) nmax * MAX(nrates, (int) NSTART) > MAXSMALLINT)
+    error->one(FLERR, "Fix {}: {} atoms on one MPI rank are more than its per-atom arrays "
+               "can index: run on more ranks", style, nmax);
+}
+
 void FixSPHIntegrate::grow_arrays(int nmax)
 {
+  check_row_offsets(nmax);
   memory->grow(state, nmax, NSTATE, "sph:state");
   rates = (double *) memory->srealloc(rates, sizeof(double) * nmax * nrates, "sph:rates");
   start = (double *) memory->srealloc(start, sizeof(double) * nmax * NSTART, "sph:start");
@@ -714,9 +723,10 @@ void FixSPHIntegrate::unpack_restart(int nlocal, int nth)
   modified_host();
 }
 
-// Atom i's rates and start values from a file's row of nr rates (the evaluation's; before
-// December 6, 2026, evening, also its acceleration, RATES_WITH_ACC; with predictor
-// extrapolated NRATES), then nstart start values (START_SIDE_BY_SIDE: before December 6,
+// Atom i's rates and start values from a file's row of nr rates (the evaluation's; with
+// its acceleration, RATES_WITH_ACC, in files written before the acceleration moved to the
+// start values; with predictor extrapolated NRATES), then nstart start values
+// (START_SIDE_BY_SIDE: files of before the grains' and the dummies' shared their columns,
 // read_start_side_by_side). Where a file's rates hold the acceleration, a grain keeps it
 // with its start values (LAST_ACC). A file of the other predictor's layout (a file of
 // `predictor midpoint` read under extrapolated, or the reverse) gives the columns both
@@ -735,8 +745,10 @@ void FixSPHIntegrate::read_rates_and_start(int i, const double *row, int nr, int
     std::fill(rates_i + ACC, rates_i + NRATES, 0.0);
     if (nr == NRATES)
       std::copy(row + ACC, row + NRATES, rates_i + ACC);
-    else if (grain)
-      std::copy(start_i + LAST_ACC, start_i + LAST_ACC + 3, rates_i + ACC);
+    else {    // the mid-point of the file's last step, of the timestep restart() read
+      if (grain) std::copy(start_i + LAST_ACC, start_i + LAST_ACC + 3, rates_i + ACC);
+      rates_i[RATES_DT] = last_dt;
+    }
   }
   if ((nr == NRATES) != (nrates == NRATES)) start_i[STEPPED] = fmin(start_i[STEPPED], 1.0);
 }

@@ -97,16 +97,18 @@ class FixSPHIntegrate : public Fix, public GRANSPH::StateLayout {
   double **state;    // rho, sigma (xx yy zz xy xz yz), regime; rows: the fix's output
   // nrates and NSTART values an atom, in one block each, without row pointers (8 bytes a
   // slot each): atom i's from rates_of(i), start_of(i)
-  double *rates;     // drho/dt, strain rate (6), spin (xy xz yz)
+  double *rates;     // drho/dt, strain rate (6), spin (xy xz yz); with predictor
+                     // extrapolated also the acceleration, dt and the step before's
   double *start;     // stepped; a grain's v, rho, sigma at the start of the step (between
                      // steps: its last acceleration), or a dummy particle's last wall
                      // velocity and force
   double *rates_of(int i) const { return rates + (bigint) i * nrates; }
   double *start_of(int i) const { return start + (bigint) i * NSTART; }
+  void check_row_offsets(int nmax) const;    // an error if nmax atoms' rows need more
   double cfl;           // CFL factor of eq. 19; 0 keeps the LAMMPS timestep
   int cfl_sound_reference;    // eq. 19's sound speed at rho_init, not at each grain's density
   int predictor_extrapolated;    // the predictor's rates extrapolated to the step's start
-  int nrates;           // columns of `rates`: NEVALUATED_RATES, or NRATES with the steps'
+  int nrates;           // columns of `rates`: NEVALUATED_RATES, or NRATES (extrapolated)
   int row_size() const { return NSTATE + nrates + NSTART; }    // all per-atom values
   int geostatic_flag;   // initialise a geostatic stress below surface_height
   double surface_height;

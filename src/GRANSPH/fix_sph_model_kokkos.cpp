@@ -225,7 +225,7 @@ int FixSPHModelKokkos<DeviceType, Model>::step_on_device(GRANSPH::Stage stage)
   atomKK->modified(this->execution_space, this->datamask_modify);
   k_state.template modify<DeviceType>();
   k_start.template modify<DeviceType>();
-  if (stage == CORRECT || extrapolate) k_rates.template modify<DeviceType>();
+  if (extrapolate) k_rates.template modify<DeviceType>();    // PREV, ACC and RATES_DT
   return bad;    // local: the rank that has one stops the run (error->one), no collective
 }
 
@@ -342,7 +342,8 @@ void FixSPHModelKokkos<DeviceType, Model>::modified_host(Arrays arrays)
 template <class DeviceType, class Model>
 void FixSPHModelKokkos<DeviceType, Model>::grow_arrays(int nmax)
 {
-  sync_host();    // grow_kokkos reallocates and copies on the host
+  this->check_row_offsets(nmax);
+  sync_host();    // the host copies hold the values that the larger arrays keep
   this->memoryKK->grow_kokkos(k_state, this->state, nmax, FSI::NSTATE, "sph:state");
   // rates and start as the base's blocks: the host copies' rows, without row pointers
   const auto grow = [nmax](auto &dual, int columns, const char *name) {

@@ -37,7 +37,6 @@
 #include "gransph_pair_terms.h"
 #include "gransph_simd.h"
 
-#include <cfloat>
 #include <type_traits>
 #include <utility>
 
@@ -134,16 +133,14 @@ KOKKOS_INLINE_FUNCTION double pruned_displacement_sq(const Positions &x, const P
   return dx * dx + dy * dy + dz * dz;
 }
 
-// The positions of the last pruning as floats from an origin near the box (12 bytes a
-// particle), callable as (i, a) as the atoms' positions are: Floats is callable the same
-// way. They lie within rounding(reach) of the atoms' where these lie within `reach` of the
-// origin in each direction (a float rounds by FLT_EPSILON / 2 of its size at most), which
-// the pruning's renewal distance allows for (PairSPHGranular::prune_renewal_sq).
+// The positions of the last pruning as floats from an origin in the rank's sub-domain (12
+// bytes a particle), callable as (i, a) as the atoms' positions are: Floats is callable
+// the same way. Their rounding, measured as they are stored, shortens the pruning's
+// renewal distance (PairSPHGranular::prune_renewal_sq).
 template <class Floats> struct PrunedPositions {
   Floats x0;
   double origin[3];
   KOKKOS_INLINE_FUNCTION double operator()(int i, int a) const { return origin[a] + x0(i, a); }
-  static double rounding(double reach) { return 1.7320508075688772 * 0.5 * FLT_EPSILON * reach; }
 };
 
 // Rates of granular particle i (eqs. 6, 7, 34, 35) over its grain and dummy neighbours.

@@ -29,10 +29,9 @@
    velocity is then spent); or in the same columns a dummy particle's wall
    velocity of the last evaluation and WALL_F, the grains' force on it then (the
    pair style's part of its f), which the setup of a run that continues the last
-   repeats. Restart files written before December 6, 2026 hold both kinds' columns
-   side by side (START_SIDE_BY_SIDE), and until that evening the acceleration in
-   the rates, also by default (RATES_WITH_ACC): FixSPHIntegrate::unpack_restart
-   reads them.
+   repeats. Older restart files hold both kinds' columns side by side
+   (START_SIDE_BY_SIDE), or the acceleration in the rates also by default
+   (RATES_WITH_ACC): FixSPHIntegrate::unpack_restart reads them.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANSPH_STATE_H

@@ -147,28 +147,20 @@ bool PairSPHGranular::rows_outdated(int nall) const
   return update->setupflag || neighbor->ago == 0 || nall != pruned_nall;
 }
 
-// less the float positions' rounding (none left: at every evaluation)
+// less the rounding of the positions kept in floats (none left: at every evaluation)
 double PairSPHGranular::prune_renewal_sq() const
 {
   const double renew = 0.5 * config.prune * config.h - pruned_rounding;
   return renew > 0.0 ? renew * renew : -1.0;
 }
 
-// The float positions' origin is the box's lower corner: owned and ghost atoms lie
-// within the box's largest extent and twice the ghost cutoff of it
+// the float positions are taken from the centre of this rank's sub-domain, as under
+// precision mixed; the caller measures their rounding (pruned_rounding) as it stores them
 void PairSPHGranular::pruned_anew(int nall)
 {
   pruned_nall = nall;
   pvector[0] += 1.0;
-  const double *lo = domain->triclinic ? domain->boxlo_bound : domain->boxlo;
-  const double *hi = domain->triclinic ? domain->boxhi_bound : domain->boxhi;
-  double reach = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    pruned_origin[a] = lo[a];
-    reach = MAX(reach, hi[a] - lo[a]);
-  }
-  reach += 2.0 * MAX(neighbor->cutneighmax, comm->cutghostuser);
-  pruned_rounding = GRANSPH::PrunedPositions<GRANSPH::HostRows<3, float>>::rounding(reach);
+  single_precision_origin(pruned_origin);
 }
 
 // p over its rows pruned in place (GRANSPH::prune_row), pruned anew when outdated or when
@@ -177,21 +169,28 @@ template <class Particles> Particles PairSPHGranular::pruned(const Particles &p,
 {
   const double *x = nall > 0 ? atom->x[0] : nullptr;    // one block of 3 nmax
   const auto now_at = [x](int j, int a) { return x[3 * j + a]; };
+  const auto pruned_at = [this]() -> GRANSPH::PrunedPositions<GRANSPH::HostRows<3, float>> {
+    return {{pruned_x.data()}, {pruned_origin[0], pruned_origin[1], pruned_origin[2]}};
+  };
   bool anew = rows_outdated(nall);
   if (!anew) {
-    const GRANSPH::PrunedPositions<GRANSPH::HostRows<3, float>> pruned_at{
-        {pruned_x.data()}, {pruned_origin[0], pruned_origin[1], pruned_origin[2]}};
+    const auto x0 = pruned_at();
     double farthest = 0.0;
     GRANSPH_SIMD_MAX(farthest)
     for (int i = 0; i < nall; ++i)
-      farthest = MAX(farthest, GRANSPH::pruned_displacement_sq(now_at, pruned_at, i));
+      farthest = MAX(farthest, GRANSPH::pruned_displacement_sq(now_at, x0, i));
     anew = farthest > prune_renewal_sq();
   }
   if (anew) {
     pruned_anew(nall);
     pruned_x.resize(3 * nall);
-    for (int i = 0; i < nall; ++i)
+    const auto x0 = pruned_at();
+    double rounding_sq = 0.0;
+    for (int i = 0; i < nall; ++i) {
       for (int a = 0; a < 3; ++a) pruned_x[3 * i + a] = x[3 * i + a] - pruned_origin[a];
+      rounding_sq = MAX(rounding_sq, GRANSPH::pruned_displacement_sq(now_at, x0, i));
+    }
+    pruned_rounding = sqrt(rounding_sq);
     pruned_count.assign(atom->nlocal, 0);
     pruned_grains.assign(atom->nlocal, 0);
     const double cutsq = pruned_cutsq();

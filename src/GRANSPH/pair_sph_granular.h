@@ -67,7 +67,7 @@ class PairSPHGranular : public Pair {
   void pruned_anew(int nall);    // counted in pvector[0], which compute pair reports
   int pruned_nall;    // the atoms, owned and ghost, of the last pruning (-1: none)
   // the positions of that pruning are floats from pruned_origin (GRANSPH::PrunedPositions),
-  // within pruned_rounding of the atoms'
+  // pruned_rounding at most from the atoms', as measured when they were stored
   double pruned_origin[3], pruned_rounding;
 
   // The passes of an evaluation over p, the particles as the twin's accessor reads them,

@@ -370,10 +370,16 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
     }
     pruned_anew(nall);
     const auto x0 = pruned_positions();
-    Kokkos::parallel_for(
-        Kokkos::RangePolicy<DeviceType>(0, nall), LAMMPS_LAMBDA(const int i) {
+    double rounding_sq = 0.0;
+    Kokkos::parallel_reduce(
+        Kokkos::RangePolicy<DeviceType>(0, nall),
+        LAMMPS_LAMBDA(const int i, double &most) {
           for (int a = 0; a < 3; ++a) x0.x0(i, a) = x(i, a) - x0.origin[a];
-        });
+          const double rsq = GRANSPH::pruned_displacement_sq(x, x0, i);
+          if (rsq > most) most = rsq;
+        },
+        Kokkos::Max<double>(rounding_sq));
+    pruned_rounding = sqrt(rounding_sq);
     if (p.wallbit)
       prune_rows_of<true>(p);
     else
