@@ -135,8 +135,10 @@ KOKKOS_INLINE_FUNCTION double pruned_displacement_sq(const Positions &x, const P
 
 // The positions of the last pruning as floats from an origin in the rank's sub-domain (12
 // bytes a particle), callable as (i, a) as the atoms' positions are: Floats is callable
-// the same way. Their rounding, measured as they are stored, shortens the pruning's
-// renewal distance (PairSPHGranular::prune_renewal_sq).
+// the same way. The rows are pruned at these positions and the atoms' displacements are
+// measured from them, so their rounding does not enter the renewal distance (a pair left
+// out lay beyond (2 + margin) h at them, and each atom has moved less than margin h / 2
+// from them since).
 template <class Floats> struct PrunedPositions {
   Floats x0;
   double origin[3];

@@ -78,7 +78,7 @@ using HostParticles = GRANSPH::ParticlesOf<HostAtoms, PairParticle, const PairPa
 
 PairSPHGranular::PairSPHGranular(LAMMPS *lmp) :
     Pair(lmp), warned_far_from_origin(false), integrator(nullptr), normals_fix(nullptr), pruned_nall(-1),
-    pruned_origin{0.0, 0.0, 0.0}, pruned_rounding(0.0),
+    pruned_origin{0.0, 0.0, 0.0},
     viscous_pressure_step(-1), viscous_pressure_nlocal(0), nmax(0),
     particles(nullptr),
     particles_single(nullptr), normals(nullptr), friction(nullptr), slide(nullptr)
@@ -147,15 +147,14 @@ bool PairSPHGranular::rows_outdated(int nall) const
   return update->setupflag || neighbor->ago == 0 || nall != pruned_nall;
 }
 
-// less the rounding of the positions kept in floats (none left: at every evaluation)
 double PairSPHGranular::prune_renewal_sq() const
 {
-  const double renew = 0.5 * config.prune * config.h - pruned_rounding;
-  return renew > 0.0 ? renew * renew : -1.0;
+  const double renew = 0.5 * config.prune * config.h;
+  return renew * renew;
 }
 
 // the float positions are taken from the centre of this rank's sub-domain, as under
-// precision mixed; the caller measures their rounding (pruned_rounding) as it stores them
+// precision mixed
 void PairSPHGranular::pruned_anew(int nall)
 {
   pruned_nall = nall;
@@ -184,13 +183,9 @@ template <class Particles> Particles PairSPHGranular::pruned(const Particles &p,
   if (anew) {
     pruned_anew(nall);
     pruned_x.resize(3 * nall);
-    const auto x0 = pruned_at();
-    double rounding_sq = 0.0;
-    for (int i = 0; i < nall; ++i) {
+    for (int i = 0; i < nall; ++i)
       for (int a = 0; a < 3; ++a) pruned_x[3 * i + a] = x[3 * i + a] - pruned_origin[a];
-      rounding_sq = MAX(rounding_sq, GRANSPH::pruned_displacement_sq(now_at, x0, i));
-    }
-    pruned_rounding = sqrt(rounding_sq);
+    const auto x0 = pruned_at();
     pruned_count.assign(atom->nlocal, 0);
     pruned_grains.assign(atom->nlocal, 0);
     const double cutsq = pruned_cutsq();
@@ -199,7 +194,7 @@ template <class Particles> Particles PairSPHGranular::pruned(const Particles &p,
         const int i = list->ilist[ii];
         int *row = list->firstneigh[i];
         const GRANSPH::PrunedRow counts = GRANSPH::prune_row<decltype(dummies)::value>(
-            p, i, now_at, cutsq, [row](int k) -> int & { return row[k]; });
+            p, i, x0, cutsq, [row](int k) -> int & { return row[k]; });
         pruned_count[i] = counts.count;
         pruned_grains[i] = counts.grains;
       }

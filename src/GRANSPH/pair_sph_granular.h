@@ -66,9 +66,8 @@ class PairSPHGranular : public Pair {
   double prune_renewal_sq() const;
   void pruned_anew(int nall);    // counted in pvector[0], which compute pair reports
   int pruned_nall;    // the atoms, owned and ghost, of the last pruning (-1: none)
-  // the positions of that pruning are floats from pruned_origin (GRANSPH::PrunedPositions),
-  // pruned_rounding at most from the atoms', as measured when they were stored
-  double pruned_origin[3], pruned_rounding;
+  // the positions of that pruning: floats from pruned_origin (GRANSPH::PrunedPositions)
+  double pruned_origin[3];
 
   // The passes of an evaluation over p, the particles as the twin's accessor reads them,
   // in the one order of both twins (pair_sph_granular.cpp's header). Twin: this style or

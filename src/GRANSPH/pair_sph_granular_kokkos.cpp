@@ -370,16 +370,10 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
     }
     pruned_anew(nall);
     const auto x0 = pruned_positions();
-    double rounding_sq = 0.0;
-    Kokkos::parallel_reduce(
-        Kokkos::RangePolicy<DeviceType>(0, nall),
-        LAMMPS_LAMBDA(const int i, double &most) {
+    Kokkos::parallel_for(
+        Kokkos::RangePolicy<DeviceType>(0, nall), LAMMPS_LAMBDA(const int i) {
           for (int a = 0; a < 3; ++a) x0.x0(i, a) = x(i, a) - x0.origin[a];
-          const double rsq = GRANSPH::pruned_displacement_sq(x, x0, i);
-          if (rsq > most) most = rsq;
-        },
-        Kokkos::Max<double>(rounding_sq));
-    pruned_rounding = sqrt(rounding_sq);
+        });
     if (p.wallbit)
       prune_rows_of<true>(p);
     else
@@ -390,7 +384,7 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows(DeviceParticles<DeviceType> &
   p.grains_first = true;
 }
 
-// the rows of p pruned anew at the atoms' positions (GRANSPH::prune_row), with or
+// the rows of p pruned anew at the positions pruned_x (GRANSPH::prune_row), with or
 // without DUMMIES
 template <class DeviceType>
 template <bool DUMMIES>
@@ -399,7 +393,7 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows_of(const DeviceParticles<Devi
   auto k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
   auto ilist = k_list->d_ilist;
   auto rows = k_list->d_neighbors;
-  auto x = atomKK->k_x.template view<DeviceType>();
+  const auto x0 = pruned_positions();
   auto count = d_pruned_count, grains = d_pruned_grains;
   const double cutsq = pruned_cutsq();
   Kokkos::parallel_for(
@@ -407,7 +401,7 @@ void PairSPHGranularKokkos<DeviceType>::prune_rows_of(const DeviceParticles<Devi
       LAMMPS_LAMBDA(const int ii) {
         const int i = ilist(ii);
         const GRANSPH::PrunedRow counts = GRANSPH::prune_row<DUMMIES>(
-            p, i, x, cutsq, Kokkos::subview(rows, i, Kokkos::ALL));
+            p, i, x0, cutsq, Kokkos::subview(rows, i, Kokkos::ALL));
         count(i) = counts.count;
         grains(i) = counts.grains;
       });
